@@ -1,0 +1,28 @@
+#include "core/Log.hpp"
+
+#include <iostream>
+#include <mutex>
+#include <set>
+
+namespace isph {
+
+namespace {
+std::mutex logMutex;
+std::set<std::string> echoed;
+}  // namespace
+
+void infoLine(std::string_view line) {
+  std::lock_guard lock(logMutex);
+  std::cout << line << '\n';
+}
+
+bool echoDefaultOnce(const std::string& key, const std::string& line) {
+  {
+    std::lock_guard lock(logMutex);
+    if (!echoed.insert(key).second) return false;
+  }
+  infoLine(line);
+  return true;
+}
+
+}  // namespace isph

@@ -1,0 +1,6 @@
+#pragma once
+
+namespace isph {
+// `git describe --tags --always --dirty` of the source tree at build time.
+const char* gitVersion();
+}  // namespace isph

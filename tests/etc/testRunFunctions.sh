@@ -1,0 +1,262 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# Tests etc/RunFunctions (getApplication, runApplication, cleanCase, ...).
+#
+# Usage: bash tests/etc/testRunFunctions.sh PROJECT_DIR
+#
+# Works in a scratch directory from mktemp; writes nothing in PROJECT_DIR.
+# Prints one PASS/FAIL line per check; exits non-zero if any check fails.
+#------------------------------------------------------------------------------
+
+# Single-quoted strings below are evaluated later (eval, sh -c) on purpose.
+# shellcheck disable=SC2016
+set -uo pipefail
+
+if [ "$#" -ne 1 ] || [ ! -f "$1/etc/RunFunctions" ]; then
+    echo "Usage: $0 PROJECT_DIR   (the directory holding etc/RunFunctions)" >&2
+    exit 2
+fi
+projectDir=$(cd "$1" && pwd -P)
+runFunctions="$projectDir/etc/RunFunctions"
+
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/testRunFunctions.XXXXXX") || exit 2
+trap 'rm -rf -- "$scratch"' EXIT
+
+nFail=0
+nPass=0
+pass() { echo "PASS: $*"; nPass=$((nPass + 1)); }
+fail() { echo "FAIL: $*"; nFail=$((nFail + 1)); }
+check() { # check "description" command...
+    local what=$1
+    shift
+    if "$@"; then pass "$what"; else fail "$what"; fi
+}
+
+# Make the environment independent of the caller's (e.g. a sourced etc/bashrc)
+unset ISPH_PROJECT_DIR ISPH_ETC ISPH_BUILD_DIR
+
+# A PATH without isphDictionary, to force getApplication's sed/awk fallback
+pathWithoutTool() {
+    local dir out=
+    local IFS=:
+    for dir in $PATH; do
+        [ -n "$dir" ] || continue
+        [ -x "$dir/isphDictionary" ] && continue
+        out="${out:+$out:}$dir"
+    done
+    echo "$out"
+}
+
+# A fake case
+caseDir="$scratch/case"
+mkdir -p "$caseDir/system" "$caseDir/constant" "$caseDir/0"
+cat > "$caseDir/system/controlDict" <<'EOF'
+FoamFile
+{
+    format      ascii;
+    class       dictionary;
+    object      controlDict;
+}
+// application notThisOne;   (a commented-out entry)
+/* application notThisEither;
+   application norThis; */
+functions
+{
+    probe { application nestedNotThisOne; }
+}
+
+application     isphLandslideFoam;   // the solver
+
+endTime         1;
+EOF
+
+cd "$caseDir" || exit 2
+
+# shellcheck source=/dev/null
+. "$runFunctions"
+
+echo "== sourcing"
+check "sourcing sets ISPH_PROJECT_DIR to the project" \
+    test "${ISPH_PROJECT_DIR:-}" = "$projectDir"
+check "sourcing sets ISPH_ETC" test "${ISPH_ETC:-}" = "$projectDir/etc"
+check "sourcing puts build/bin on PATH" \
+    test "${PATH%%:*}" = "$projectDir/build/bin"
+# shellcheck source=/dev/null
+. "$runFunctions"
+n=$(tr : '\n' <<< "$PATH" | grep -cxF "$projectDir/build/bin")
+check "sourcing twice does not duplicate build/bin on PATH" test "$n" = 1
+
+echo "== getApplication"
+savedPath=$PATH
+PATH=$(pathWithoutTool)
+check "isphDictionary is not on PATH (fallback forced)" \
+    eval '! command -v isphDictionary >/dev/null'
+app=$(getApplication)
+check "getApplication (fallback) prints isphLandslideFoam [got '$app']" \
+    test "$app" = isphLandslideFoam
+
+fakeBin="$scratch/fakebin"
+mkdir -p "$fakeBin"
+printf '#!/bin/sh\necho fromTool\n' > "$fakeBin/isphDictionary"
+chmod +x "$fakeBin/isphDictionary"
+app=$(PATH="$fakeBin:$PATH" getApplication)
+check "getApplication uses isphDictionary when on PATH [got '$app']" \
+    test "$app" = fromTool
+printf '#!/bin/sh\nexit 1\n' > "$fakeBin/isphDictionary"
+app=$(PATH="$fakeBin:$PATH" getApplication)
+check "getApplication falls back when isphDictionary fails [got '$app']" \
+    test "$app" = isphLandslideFoam
+PATH=$savedPath
+
+if [ -x "$projectDir/build/bin/isphDictionary" ]; then
+    app=$(PATH="$projectDir/build/bin:$PATH" getApplication)
+    check "getApplication with the built isphDictionary [got '$app']" \
+        test "$app" = isphLandslideFoam
+fi
+
+mkdir -p "$scratch/noApp/system"
+echo "endTime 1;" > "$scratch/noApp/system/controlDict"
+check "getApplication fails without an application entry" \
+    eval '! (cd "$scratch/noApp" && PATH=$(pathWithoutTool) getApplication 2>/dev/null)'
+check "getApplication fails without system/controlDict" \
+    eval '! (cd "$scratch" && getApplication 2>/dev/null)'
+
+echo "== runApplication"
+counter="$scratch/counter"
+: > "$counter"
+# A shell-function "application": counts its runs, writes to stdout and stderr
+fakeApp() {
+    echo run >> "$counter"
+    echo "fakeApp stdout $* run $(wc -l < "$counter")"
+    echo "fakeApp stderr" >&2
+}
+failingApp() {
+    echo "something went wrong"
+    return 3
+}
+
+msg=$(runApplication fakeApp arg1 arg2)
+rc=$?
+check "runApplication returns 0 for a successful app" test "$rc" = 0
+check "runApplication prints 'Running fakeApp on <dir>' [got '$msg']" \
+    test "$msg" = "Running fakeApp on $caseDir"
+check "runApplication writes log.fakeApp" test -f log.fakeApp
+check "log.fakeApp holds the app's stdout with arguments" \
+    grep -qx "fakeApp stdout arg1 arg2 run 1" log.fakeApp
+check "log.fakeApp holds the app's stderr" grep -qx "fakeApp stderr" log.fakeApp
+
+cp log.fakeApp "$scratch/log.saved"
+msg=$(runApplication fakeApp arg1 arg2)
+rc=$?
+check "second runApplication returns 0" test "$rc" = 0
+check "second runApplication says already run [got '$msg']" \
+    test "$msg" = "fakeApp already run on $caseDir: remove log file 'log.fakeApp' to re-run"
+check "second runApplication leaves the log untouched" cmp -s log.fakeApp "$scratch/log.saved"
+check "second runApplication does not run the app" test "$(wc -l < "$counter")" = 1
+
+runApplication -o fakeApp again >/dev/null
+check "-o overwrites the log" \
+    test "$(cat log.fakeApp)" = "$(printf 'fakeApp stdout again run 2\nfakeApp stderr')"
+runApplication -overwrite fakeApp >/dev/null
+check "-overwrite overwrites the log" grep -q "run 3" log.fakeApp
+check "-overwrite left no old content" eval '! grep -q "run 2" log.fakeApp'
+
+runApplication -a fakeApp more >/dev/null
+check "-a appends to the log" \
+    eval 'grep -q "run 3" log.fakeApp && grep -q "more run 4" log.fakeApp'
+
+runApplication -s second fakeApp >/dev/null
+check "-s suffix writes log.fakeApp.second" grep -q "run 5" log.fakeApp.second
+
+runApplication sh -c 'echo from a real executable' >/dev/null
+check "runApplication runs executables (log.sh)" grep -qx "from a real executable" log.sh
+
+runApplication -o /bin/sh -c 'echo by path' >/dev/null
+check "an app given by path logs to log.<basename>" grep -qx "by path" log.sh
+
+err=$(runApplication failingApp 2>&1 >/dev/null)
+rc=$?
+check "runApplication returns the failing app's status (3) [got $rc]" test "$rc" = 3
+check "failure message names the log [got '${err%%$'\n'*}']" \
+    grep -q "failingApp failed.*log.failingApp" <<< "$err"
+check "failure message shows the end of the log" grep -q "something went wrong" <<< "$err"
+
+# (not as an 'if' condition: that would disable set -e in the subshell)
+(set -e; runApplication -o failingApp >/dev/null 2>&1; exit 0)
+rc=$?
+check "runApplication failure stops a 'set -e' caller [status $rc]" test "$rc" = 3
+
+echo "== isTest/notTest"
+check "isTest finds -test" isTest a -test b
+check "notTest without -test" notTest a b
+
+echo "== cleanCase"
+mkdir -p 0.1 1 2e-05 100 0.orig postProcessing/probes VTK 0/uniform
+touch log.extra plot.png results.txt Allrun 0/U 0.1/U constant/transportProperties
+cleanCase
+for d in 0.1 1 2e-05 100; do
+    check "cleanCase removes time directory $d/" test ! -e "$d"
+done
+check "cleanCase removes log.*" eval '! ls log.* >/dev/null 2>&1'
+for f in postProcessing VTK plot.png results.txt; do
+    check "cleanCase removes $f" test ! -e "$f"
+done
+for f in 0/U 0.orig system/controlDict constant/transportProperties Allrun; do
+    check "cleanCase keeps $f" test -e "$f"
+done
+
+mkdir -p 0.5
+touch log.x
+cleanCase0
+check "cleanCase0 removes 0/" test ! -e 0
+check "cleanCase0 removes time directories and logs" \
+    eval 'test ! -e 0.5 && ! ls log.* >/dev/null 2>&1'
+check "cleanCase0 keeps constant/ and system/" test -d constant -a -d system
+
+mkdir -p "$scratch/other/0" "$scratch/other/3"
+cleanCase "$scratch/other"
+check "cleanCase DIR cleans DIR" test -d "$scratch/other/0" -a ! -e "$scratch/other/3"
+
+echo "== POSIX sh"
+# Tutorials are '#!/bin/sh' scripts: check the functions work there too.
+if command -v dash >/dev/null 2>&1; then posixSh="dash"; else posixSh="sh"; fi
+shCase="$scratch/shCase"
+mkdir -p "$shCase/system" "$shCase/0" "$shCase/0.2"
+cp "$caseDir/system/controlDict" "$shCase/system/"
+shOut=$(
+    cd "$shCase" && env -u ISPH_PROJECT_DIR -u ISPH_ETC ISPH_ETC="$projectDir/etc" \
+        PATH="$(pathWithoutTool)" "$posixSh" -c '
+        . "$ISPH_ETC/RunFunctions" || exit 10
+        echo "dir=$ISPH_PROJECT_DIR"
+        echo "app=$(getApplication)"
+        runApplication echo hello
+        runApplication echo hello
+        runApplication -s x false; echo "rc=$?"
+        cleanCase
+        ls -d 0* 2>/dev/null
+    ' 2>&1
+)
+check "$posixSh: RunFunctions finds the project from ISPH_ETC" grep -qx "dir=$projectDir" <<< "$shOut"
+check "$posixSh: getApplication" grep -qx "app=isphLandslideFoam" <<< "$shOut"
+check "$posixSh: runApplication runs, then refuses" \
+    eval 'grep -q "^Running echo on" <<< "$shOut" && grep -q "^echo already run on" <<< "$shOut"'
+check "$posixSh: runApplication returns a failing app's status" grep -qx "rc=1" <<< "$shOut"
+check "$posixSh: cleanCase keeps 0, removes 0.2" \
+    test "$(grep '^0' <<< "$shOut" | tr '\n' ' ')" = "0 "
+
+# Located by walking up from $PWD (no ISPH_* set, no BASH_SOURCE in dash)
+walkOut=$(
+    cd "$projectDir/etc" && env -u ISPH_PROJECT_DIR -u ISPH_ETC "$posixSh" -c \
+        '. ./RunFunctions && echo "dir=$ISPH_PROJECT_DIR"' 2>&1
+)
+check "$posixSh: RunFunctions finds the project walking up from \$PWD [got '$walkOut']" \
+    test "$walkOut" = "dir=$projectDir"
+
+echo
+if [ "$nFail" -ne 0 ]; then
+    echo "$posixSh output was:"
+    printf '    %s\n' "$shOut"
+    echo "testRunFunctions: $nFail FAILED, $nPass passed"
+    exit 1
+fi
+echo "testRunFunctions: all $nPass checks passed"
