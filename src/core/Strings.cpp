@@ -36,8 +36,8 @@ std::string nearestWord(std::string_view word, const std::vector<std::string>& c
     }
   }
   // Accept up to a third of the word's length in edits (at least 1, at most 3).
-  // Words of one or two letters only match case-insensitively.
-  const std::size_t limit = word.size() < 3 ? 0 : std::clamp<std::size_t>(word.size() / 3, 1, 3);
+  // A one-letter word only matches case-insensitively ("q" is not a typo of "a").
+  const std::size_t limit = word.size() < 2 ? 0 : std::clamp<std::size_t>(word.size() / 3, 1, 3);
   if (best.empty() || bestDistance > limit) return {};
   return best;
 }
