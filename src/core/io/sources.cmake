@@ -1,0 +1,6 @@
+# Crash-safe file output, whole-file reads, FoamFile headers.
+target_sources(isphCore PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/AtomicFile.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/FoamFileHeader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ReadFile.cpp
+)

@@ -1,0 +1,274 @@
+// The run-time controller: start time, stepping, write times, controlDict re-reading, signals.
+#include "core/time/Time.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <ctime>
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "core/io/FoamFileHeader.hpp"
+#include "core/time/TimeName.hpp"
+
+namespace isph {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<std::string> otherControlDictKeywords{"application", "functions", "libs"};
+
+volatile std::sig_atomic_t signalCaught = 0;
+
+extern "C" void onStopSignal(int sig) {
+  if (signalCaught) {  // second signal: abort as the default action does
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    return;
+  }
+  signalCaught = sig;
+  static const char message[] =
+      "\n--> Signal caught: writing at the end of the next time step and stopping"
+      " (send it again to abort)\n";
+  [[maybe_unused]] const auto n = ::write(STDERR_FILENO, message, sizeof message - 1);
+}
+
+fs::file_time_type modificationTime(const fs::path& file) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(file, ec);
+  return ec ? fs::file_time_type{} : t;
+}
+
+}  // namespace
+
+Time::Time(const fs::path& caseDir)
+    : caseDir_(caseDir),
+      controlDictFile_(caseDir / "system" / "controlDict"),
+      controlDictTime_(modificationTime(controlDictFile_)),
+      controlDict_(Dictionary::readFile(controlDictFile_)),
+      settings_(ControlSettings::read(controlDict_)),
+      wallStart_(std::chrono::steady_clock::now()) {
+  controlDict_.checkKeywords(otherControlDictKeywords);
+  precision_ = settings_.timePrecision;
+  deltaT_ = deltaT0_ = deltaTSave_ = settings_.deltaT;
+  endTime_ = settings_.endTime;
+  stopAt_ = settings_.stopAt;
+
+  const std::vector<Instant> times = listTimes(caseDir_);
+  const Instant* start = nullptr;
+  switch (settings_.startFrom) {
+    case StartFrom::firstTime:
+      start = times.empty() ? nullptr : &times.front();
+      break;
+    case StartFrom::latestTime:
+      start = times.empty() ? nullptr : &times.back();
+      break;
+    case StartFrom::startTime:
+      start = findTime(times, settings_.startTime, 1e-12);
+      break;
+  }
+  // Without time directories firstTime and latestTime start at 0, as in OpenFOAM.
+  value_ = start ? start->value
+                 : (settings_.startFrom == StartFrom::startTime ? settings_.startTime : 0.0);
+  name_ = start ? start->name : isph::timeName(value_, precision_);
+  restoreTimeState();
+  startTime_ = value_;
+  startName_ = name_;
+}
+
+// Restart contract: <start>/uniform/time holds the exact value, the index and the steps.
+void Time::restoreTimeState() {
+  const fs::path file = caseDir_ / name_ / "uniform" / "time";
+  std::optional<double> stored;
+  if (fs::exists(file)) {
+    const Dictionary dict = Dictionary::readFile(file);
+    // As OpenFOAM: the saved deltaT is the adapted one, used only with adjustTimeStep.
+    if (settings_.adjustTimeStep) {
+      if (auto dt = dict.getOptional<double>("deltaT"); dt && *dt > 0)
+        deltaT_ = deltaT0_ = deltaTSave_ = *dt;
+    }
+    if (auto dt0 = dict.getOptional<double>("deltaT0"); dt0 && *dt0 > 0)
+      deltaT0_ = deltaTSave_ = *dt0;
+    if (auto index = dict.getOptional<label>("index")) index_ = *index;
+    stored = dict.getOptional<double>("value");
+    dict.markRead("name");
+  }
+  // Use the exact stored value (the name is rounded) and the precision the name was made with.
+  const double candidate = stored.value_or(value_);
+  for (int p = precision_; p <= 17; ++p) {
+    if (isph::timeName(candidate, p) == name_) {
+      value_ = candidate;
+      precision_ = p;
+      return;
+    }
+  }
+  if (stored) {
+    warning(fmt::format("time {} read from {} differs from the time directory name {}; using {}",
+                        *stored, file.string(), name_, value_));
+  }
+}
+
+bool Time::run() const { return value_ < endTime_ - 0.5 * deltaT_; }
+
+void Time::setDeltaT(double dt) {
+  if (!(dt > 0) || !std::isfinite(dt))
+    fatalError(fmt::format("the time step must be positive, found {}", dt));
+  deltaT_ = dt;
+}
+
+void Time::adjustDeltaT(double dtWanted) {
+  double dt = std::min(dtWanted, settings_.maxDeltaT);
+  if (!(dt > 0) || !std::isfinite(dt))
+    fatalError(fmt::format("the time step must be positive, found {}", dtWanted));
+  const bool adjustable =
+      settings_.writeControl == WriteControl::adjustableRunTime && stopAt_ == StopAt::endTime;
+  double target = endTime_;
+  if (adjustable) {
+    target = std::min(
+        target, startTime_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
+  }
+  const double remaining = target - value_;
+  if (remaining > 0) {
+    const double steps = remaining / dt;
+    // Away from endTime only adjustableRunTime changes the step.
+    if ((adjustable || steps < 2) && steps < 1e9)
+      dt = remaining / std::max(1.0, std::ceil(steps - 1e-6));
+  }
+  deltaT_ = dt;
+}
+
+Time& Time::operator++() {
+  readModifiedControlDict();
+  if (signalCaught && !signalHandled_) {
+    signalHandled_ = true;
+    stopAt_ = StopAt::writeNow;
+    info("Signal caught: writing at the end of this time step and stopping");
+  }
+
+  deltaT0_ = deltaTSave_;
+  deltaTSave_ = deltaT_;
+  const std::string oldName = name_;
+  value_ += deltaT_;
+  ++index_;
+
+  // Land exactly on the write time or endTime that the step was sized to reach.
+  auto snap = [this](double target) {
+    if (std::abs(value_ - target) <= 1e-6 * deltaT_ + 1e-14 * std::abs(target)) value_ = target;
+  };
+  if (settings_.writeControl != WriteControl::timeStep) {
+    snap(startTime_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
+  }
+  snap(endTime_);
+  if (std::abs(value_) < 1e-12 * deltaT_) value_ = 0;
+
+  name_ = isph::timeName(value_, precision_);
+  const int oldPrecision = precision_;
+  while (name_ == oldName && precision_ < 17) name_ = isph::timeName(value_, ++precision_);
+  if (precision_ != oldPrecision) {
+    warning(fmt::format(
+        "increased the timePrecision from {} to {} to distinguish between time names at time {}",
+        oldPrecision, precision_, name_));
+  }
+  setWriteTime();
+  return *this;
+}
+
+void Time::setWriteTime() {
+  writeTime_ = false;
+  if (settings_.writeControl == WriteControl::timeStep) {
+    writeTime_ = index_ % static_cast<label>(settings_.writeInterval) == 0;
+  } else {
+    const auto index = static_cast<long>(
+        std::floor((value_ - startTime_ + 0.5 * deltaT_) / settings_.writeInterval));
+    if (index > writeTimeIndex_) {
+      writeTime_ = true;
+      writeTimeIndex_ = index;
+    }
+  }
+  // stopAt writeNow/noWriteNow end the run after this step (with or without a write).
+  if (stopAt_ != StopAt::endTime) endTime_ = value_;
+  if (stopAt_ == StopAt::writeNow) writeTime_ = true;
+  if (stopAt_ == StopAt::endTime && value_ >= endTime_ - 0.5 * deltaT_) writeTime_ = true;
+}
+
+void Time::writeTimeState(const fs::path& timeDir) const {
+  Dictionary dict("time");
+  dict.set("value", value_);
+  dict.set("name", name_);
+  dict.set("index", index_);
+  dict.set("deltaT", deltaT_);
+  dict.set("deltaT0", deltaT0_);
+  const fs::path uniform = timeDir / "uniform";
+  std::error_code ec;
+  fs::create_directories(uniform, ec);
+  if (ec) fatalError(fmt::format("cannot create {}: {}", uniform.string(), ec.message()));
+  writeFileAtomic(uniform / "time",
+                  foamFileHeader("dictionary", "time", name_ + "/uniform", false) + dict.write() +
+                      foamFileFooter());
+}
+
+void Time::purgeOldWrites() {
+  if (settings_.purgeWrite <= 0 || !writeTime_ || name_ == startName_) return;
+  if (writtenTimes_.empty() || writtenTimes_.back() != name_) writtenTimes_.push_back(name_);
+  while (writtenTimes_.size() > static_cast<std::size_t>(settings_.purgeWrite)) {
+    std::error_code ec;
+    fs::remove_all(caseDir_ / writtenTimes_.front(), ec);
+    if (ec)
+      warning(fmt::format("purgeWrite: cannot remove {}: {}",
+                          (caseDir_ / writtenTimes_.front()).string(), ec.message()));
+    writtenTimes_.pop_front();
+  }
+}
+
+bool Time::readModifiedControlDict() {
+  if (!settings_.runTimeModifiable) return false;
+  const auto mtime = modificationTime(controlDictFile_);
+  if (mtime == controlDictTime_) return false;
+  controlDictTime_ = mtime;
+  info("Re-reading system/controlDict");
+  try {
+    Dictionary dict = Dictionary::readFile(controlDictFile_);
+    ControlSettings s = ControlSettings::read(dict);
+    dict.checkKeywords(otherControlDictKeywords);
+    if (s.deltaT != settings_.deltaT) deltaT_ = s.deltaT;
+    if (s.writeControl != settings_.writeControl || s.writeInterval != settings_.writeInterval) {
+      writeTimeIndex_ =
+          static_cast<long>(std::floor((value_ - startTime_ + 0.5 * deltaT_) / s.writeInterval));
+    }
+    if (s.timePrecision != settings_.timePrecision) precision_ = s.timePrecision;
+    stopAt_ = s.stopAt;
+    if (stopAt_ == StopAt::endTime) endTime_ = s.endTime;
+    settings_ = s;
+    controlDict_ = std::move(dict);
+  } catch (const FatalError& e) {
+    warning(fmt::format("cannot re-read {}; the run goes on with the previous controls:\n{}",
+                        controlDictFile_.string(), e.report()));
+    return false;
+  }
+  return true;
+}
+
+void Time::installSignalHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool Time::stopRequested() { return signalCaught != 0; }
+
+std::string Time::executionTimeLine() const {
+  const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+  const auto wall = std::chrono::duration_cast<std::chrono::seconds>(
+      std::chrono::steady_clock::now() - wallStart_);
+  return fmt::format("ExecutionTime = {:.6g} s  ClockTime = {} s", cpu, wall.count());
+}
+
+}  // namespace isph

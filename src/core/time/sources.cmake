@@ -1,0 +1,7 @@
+# Time names and selection, controlDict run controls, the run-time controller.
+target_sources(isphCore PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/TimeName.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TimeSelector.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ControlDict.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
+)

@@ -1,0 +1,82 @@
+#include "sph/neighbours/NeighbourList.hpp"
+
+#include "sph/neighbours/CellGrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isph {
+
+namespace {
+
+// Calls f(b) for every particle b in the 3^d cells around particle a's cell.
+template <class F>
+void forCandidates(const CellGrid& grid, const Vec3& x, F&& f) {
+  const auto c = grid.cellOf(x);
+  const auto& n = grid.counts();
+  const int dz = grid.dimension() == 3 ? 1 : 0;
+  for (int k = c[2] - dz; k <= c[2] + dz; ++k) {
+    if (k < 0 || k >= n[2]) continue;
+    for (int j = c[1] - 1; j <= c[1] + 1; ++j) {
+      if (j < 0 || j >= n[1]) continue;
+      const int i0 = std::max(c[0] - 1, 0), i1 = std::min(c[0] + 1, n[0] - 1);
+      // Cells i0..i1 of one row are contiguous in the sorted array.
+      const long first = grid.index({i0, j, k}), last = grid.index({i1, j, k});
+      const int* sorted = grid.sorted().data();
+      for (int s = grid.cellStart()[static_cast<std::size_t>(first)];
+           s < grid.cellStart()[static_cast<std::size_t>(last) + 1]; ++s) {
+        f(sorted[s]);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kernel) {
+  const double support = kernel.supportRadius();
+  const double support2 = support * support;
+  const CellGrid grid(positions, support, kernel.dimension());
+  const long n = static_cast<long>(positions.size());
+
+  // Pass 1: count; pass 2: fill. Each particle writes only its own row.
+  std::vector<long> count(static_cast<std::size_t>(n) + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const Vec3& xa = positions[static_cast<std::size_t>(a)];
+    long c = 0;
+    forCandidates(grid, xa, [&](int b) {
+      if (b != a && (xa - positions[static_cast<std::size_t>(b)]).squaredNorm() < support2) ++c;
+    });
+    count[static_cast<std::size_t>(a) + 1] = c;
+  }
+  start.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (long a = 0; a < n; ++a) start[static_cast<std::size_t>(a) + 1] = start[static_cast<std::size_t>(a)] + count[static_cast<std::size_t>(a) + 1];
+  const std::size_t nPairs = static_cast<std::size_t>(start.back());
+  index.resize(nPairs);
+  W.resize(nPairs);
+  F.resize(nPairs);
+
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const Vec3& xa = positions[static_cast<std::size_t>(a)];
+    std::size_t k = static_cast<std::size_t>(start[static_cast<std::size_t>(a)]);
+    forCandidates(grid, xa, [&](int b) {
+      if (b == a) return;
+      const double r2 = (xa - positions[static_cast<std::size_t>(b)]).squaredNorm();
+      if (r2 >= support2) return;
+      const double r = std::sqrt(r2);
+      index[k] = b;
+      W[k] = kernel.W(r);
+      F[k] = r > 0 ? kernel.dWdr(r) / r : 0.0;
+      ++k;
+    });
+  }
+}
+
+std::vector<int> cellOrder(const std::vector<Vec3>& positions, double cellSize, int dimension) {
+  const CellGrid grid(positions, cellSize, dimension);
+  return grid.sorted();
+}
+
+}  // namespace isph

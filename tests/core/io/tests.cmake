@@ -1,0 +1,4 @@
+isph_add_test(testAtomicFile LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/AtomicFileTest.cpp ${CMAKE_CURRENT_LIST_DIR}/StagedDirectoryTest.cpp
+  LIBS isphCore)
+isph_add_test(testFoamFileHeader LABEL unit SOURCES ${CMAKE_CURRENT_LIST_DIR}/FoamFileHeaderTest.cpp LIBS isphCore)

@@ -1,0 +1,7 @@
+isph_add_test(testTime LABEL unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/TimeNameTest.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/TimeSelectorTest.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ControlDictTest.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/TimeTest.cpp
+  LIBS isphCore)
