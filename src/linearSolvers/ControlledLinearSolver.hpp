@@ -1,0 +1,29 @@
+#pragma once
+// The part of solve() that every solver shares (LinearSolver.hpp defines the residual):
+// check the system, return x = 0 for b = 0, measure the warm start's residual and stop if
+// it already meets the tolerance, let the concrete solver iterate towards the target
+// max(tolerance, relTol * r_initial), then judge the result by our own residual. If a
+// solver stops early on its own (recursive) residual estimate, it is restarted from its
+// result, at most twice, within the remaining iterations.
+#include "linearSolvers/LinearSolver.hpp"
+
+namespace isph {
+
+class ControlledLinearSolver : public LinearSolver {
+ public:
+  explicit ControlledLinearSolver(LinearSolverControls controls) : controls_(std::move(controls)) {}
+
+  SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) final;
+  const LinearSolverControls& controls() const { return controls_; }
+
+ protected:
+  // Improve x until ||b - A x|| / ||b|| <= target or maxIter iterations are spent; return
+  // the iterations used and add the times to `performance`.
+  virtual int iterate(const SparseSystem& A, std::vector<double>& x, double target, int maxIter,
+                      SolverPerformance& performance) = 0;
+
+ private:
+  LinearSolverControls controls_;
+};
+
+}  // namespace isph

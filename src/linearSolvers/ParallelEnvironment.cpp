@@ -1,0 +1,62 @@
+#include "linearSolvers/ParallelEnvironment.hpp"
+
+#include <HYPRE_utilities.h>
+#include <mpi.h>
+
+#include "core/Error.hpp"
+
+namespace isph {
+
+namespace {
+bool hypreInitialised = false;
+}
+
+ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised) {
+    int finalised = 0;
+    MPI_Finalized(&finalised);
+    if (finalised)
+      fatalError("ParallelEnvironment: MPI was already finalised and cannot be started again");
+    if (MPI_Init(&argc, &argv) != MPI_SUCCESS) fatalError("ParallelEnvironment: MPI_Init failed");
+    ownsMpi_ = true;
+  }
+  if (!hypreInitialised) {
+    HYPRE_Init();
+    hypreInitialised = true;
+    ownsHypre_ = true;
+  }
+}
+
+ParallelEnvironment::~ParallelEnvironment() {
+  if (ownsHypre_) {
+    HYPRE_Finalize();
+    hypreInitialised = false;
+  }
+  if (ownsMpi_ && active()) MPI_Finalize();
+}
+
+bool ParallelEnvironment::active() {
+  int initialised = 0;
+  int finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  return initialised && !finalised;
+}
+
+int ParallelEnvironment::nProcs() {
+  if (!active()) return 1;
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+int ParallelEnvironment::rank() {
+  if (!active()) return 0;
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+}  // namespace isph

@@ -1,0 +1,89 @@
+#include "linearSolvers/SparseSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/Error.hpp"
+
+namespace isph {
+
+void checkSparseSystem(const SparseSystem& A) {
+  const int n = A.nRows();
+  if (A.rowStart.empty() || A.rowStart.front() != 0) {
+    fatalError("sparse system: rowStart must have nRows + 1 entries and start at 0");
+  }
+  const auto nnz = static_cast<std::size_t>(A.rowStart.back());
+  if (A.columns.size() != nnz || A.values.size() != nnz) {
+    fatalError(
+        fmt::format("sparse system: rowStart ends at {} but there are {} columns and {} values",
+                    nnz, A.columns.size(), A.values.size()));
+  }
+  if (A.rhs.size() != static_cast<std::size_t>(n)) {
+    fatalError(fmt::format("sparse system: {} rows but the right-hand side has {} entries", n,
+                           A.rhs.size()));
+  }
+  // lastSeen[c] == i marks column c as used in row i: repeated columns are caught in O(nnz).
+  std::vector<int> lastSeen(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
+    if (A.rowStart[i + 1] < A.rowStart[i]) {
+      fatalError(fmt::format("sparse system: rowStart decreases at row {}", A.firstRow + i));
+    }
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const long c = A.columns[k] - A.firstRow;
+      if (c < 0 || c >= n) {
+        fatalError(fmt::format(
+            "sparse system: row {} has column {} outside the rows [{}, {}) of this rank",
+            A.firstRow + i, A.columns[k], A.firstRow, A.firstRow + n));
+      }
+      if (lastSeen[c] == i) {
+        fatalError(
+            fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, A.columns[k]));
+      }
+      lastSeen[c] = i;
+      if (!std::isfinite(A.values[k])) {
+        fatalError(fmt::format("sparse system: A({}, {}) = {} is not finite", A.firstRow + i,
+                               A.columns[k], A.values[k]));
+      }
+    }
+    if (!std::isfinite(A.rhs[i])) {
+      fatalError(fmt::format("sparse system: b({}) = {} is not finite", A.firstRow + i, A.rhs[i]));
+    }
+  }
+}
+
+void multiply(const SparseSystem& A, const std::vector<double>& x, std::vector<double>& y) {
+  const int n = A.nRows();
+  y.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    double sum = 0.0;
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+      sum += A.values[k] * x[A.columns[k] - A.firstRow];
+    y[i] = sum;
+  }
+}
+
+double norm2(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (const double a : v) sum += a * a;
+  return std::sqrt(sum);
+}
+
+double residualNorm(const SparseSystem& A, const std::vector<double>& x) {
+  const int n = A.nRows();
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double r = A.rhs[i];
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k)
+      r -= A.values[k] * x[A.columns[k] - A.firstRow];
+    sum += r * r;
+  }
+  return std::sqrt(sum);
+}
+
+double normalisedResidual(const SparseSystem& A, const std::vector<double>& x) {
+  return residualNorm(A, x) / std::max(norm2(A.rhs), std::numeric_limits<double>::min());
+}
+
+}  // namespace isph

@@ -1,0 +1,100 @@
+#include "linearSolvers/hypre/BoomerAMG.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <vector>
+
+#include "core/dictionary/Dictionary.hpp"
+#include "linearSolvers/hypre/HypreError.hpp"
+
+namespace isph {
+
+namespace {
+
+// A word from `codes`, default `fallback` (echoed), as hypre's integer code.
+int codeOf(const Dictionary& dict, const char* key, const std::map<std::string, int>& codes,
+           const std::string& fallback) {
+  std::vector<std::string> names;
+  for (const auto& [name, code] : codes) names.push_back(name);
+  return codes.at(dict.getChoiceOrDefault(key, names, fallback));
+}
+
+void checkRange(const Dictionary& dict, const char* key, bool ok, const std::string& what) {
+  if (ok) return;
+  const Entry* e = dict.findEntry(key);
+  fatalIOError(e ? e->location() : dict.location(), fmt::format("{} must be {}", key, what));
+}
+
+// The Krylov setup calls this instead of HYPRE_BoomerAMGSetup while a hierarchy is reused.
+HYPRE_Int keepHierarchy(HYPRE_Solver, HYPRE_ParCSRMatrix, HYPRE_ParVector, HYPRE_ParVector) {
+  return 0;
+}
+
+}  // namespace
+
+BoomerAMGControls BoomerAMGControls::read(const Dictionary& dict) {
+  BoomerAMGControls c;
+  c.strongThreshold = dict.getOrDefault("strongThreshold", c.strongThreshold);
+  checkRange(dict, "strongThreshold", c.strongThreshold > 0.0 && c.strongThreshold < 1.0,
+             "between 0 and 1 (0.25 in 2D; 0.5 is worth testing)");
+  c.coarsenType = codeOf(dict, "coarsenType", {{"HMIS", 10}, {"PMIS", 8}, {"Falgout", 6}}, "HMIS");
+  c.interpType = codeOf(dict, "interpType",
+                        {{"extPI", 6},
+                         {"ext", 14},
+                         {"standard", 8},
+                         {"classical", 0},
+                         {"direct", 3},
+                         {"multipass", 4}},
+                        "extPI");
+  c.pMaxElmts = dict.getOrDefault("pMaxElmts", c.pMaxElmts);
+  checkRange(dict, "pMaxElmts", c.pMaxElmts >= 0, "0 (no truncation) or more");
+  c.aggNumLevels = dict.getOrDefault("aggNumLevels", c.aggNumLevels);
+  checkRange(dict, "aggNumLevels", c.aggNumLevels >= 0, "0 or more");
+  c.relaxType = codeOf(dict, "smoother",
+                       {{"l1GaussSeidel", -1}, {"symmetricGaussSeidel", 6}, {"l1Jacobi", 18}},
+                       "l1GaussSeidel");
+  c.reuseSetup = dict.getOrDefault("reuseSetup", c.reuseSetup);
+  checkRange(dict, "reuseSetup", c.reuseSetup >= 1, "1 (rebuild every solve) or more");
+  return c;
+}
+
+BoomerAMG::~BoomerAMG() { destroy(); }
+
+void BoomerAMG::create() {
+  hypreCheck(HYPRE_BoomerAMGCreate(&amg_), "HYPRE_BoomerAMGCreate");
+  HYPRE_BoomerAMGSetMaxIter(amg_, 1);  // one V-cycle per application
+  HYPRE_BoomerAMGSetTol(amg_, 0.0);
+  HYPRE_BoomerAMGSetPrintLevel(amg_, 0);
+  HYPRE_BoomerAMGSetCoarsenType(amg_, controls_.coarsenType);
+  HYPRE_BoomerAMGSetInterpType(amg_, controls_.interpType);
+  HYPRE_BoomerAMGSetPMaxElmts(amg_, controls_.pMaxElmts);
+  HYPRE_BoomerAMGSetStrongThreshold(amg_, controls_.strongThreshold);
+  HYPRE_BoomerAMGSetAggNumLevels(amg_, controls_.aggNumLevels);
+  if (controls_.relaxType >= 0) HYPRE_BoomerAMGSetRelaxType(amg_, controls_.relaxType);
+  hypreCheck(HYPRE_GetError(), "configuring BoomerAMG");
+}
+
+void BoomerAMG::destroy() {
+  if (amg_) HYPRE_BoomerAMGDestroy(amg_);
+  amg_ = nullptr;
+}
+
+HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
+  const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
+  if (sameMatrixShape && solvesWithHierarchy_ < controls_.reuseSetup) {
+    ++solvesWithHierarchy_;
+    lastReused_ = true;
+    return keepHierarchy;
+  }
+  destroy();
+  create();
+  firstRow_ = firstRow;
+  nRows_ = nRows;
+  solvesWithHierarchy_ = 1;
+  ++built_;
+  lastReused_ = false;
+  return HYPRE_BoomerAMGSetup;
+}
+
+}  // namespace isph

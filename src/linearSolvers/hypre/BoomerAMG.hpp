@@ -1,0 +1,69 @@
+#pragma once
+// hypre's BoomerAMG as a preconditioner (one V(1,1) cycle: MaxIter 1, Tol 0), with the
+// settings of numerics.md §5, each optional in the solver dictionary (defaults echoed):
+//
+//   strongThreshold 0.25;            // 0.5 is worth testing for wide SPH stencils
+//   coarsenType     HMIS;            // HMIS (10) | PMIS (8, the GPU path) | Falgout (6)
+//   interpType      extPI;           // extPI (ext+i, 6) | ext (14) | standard (8) | classical (0)
+//                                    //   | direct (3) | multipass (4)
+//   pMaxElmts       4;               // interpolation truncation
+//   aggNumLevels    0;               // 1 above ~1e5 unknowns
+//   smoother        l1GaussSeidel;   // l1GaussSeidel (13 down, 14 up: symmetric V-cycle)
+//                                    //   | symmetricGaussSeidel (6) | l1Jacobi (18, GPU)
+//   reuseSetup      1;               // keep a hierarchy for N solves (N - 1 reuses)
+//
+// Reuse: the hierarchy built for one matrix preconditions the next reuseSetup - 1 solves
+// (the finest-level smoother always uses the current matrix; the coarse levels are the old
+// ones, still an SPD preconditioner). A matrix of another size forces a rebuild.
+#include <HYPRE_parcsr_ls.h>
+
+#include <string>
+
+namespace isph {
+
+class Dictionary;
+
+struct BoomerAMGControls {
+  double strongThreshold = 0.25;
+  int coarsenType = 10;  // HMIS
+  int interpType = 6;    // ext+i
+  int pMaxElmts = 4;
+  int aggNumLevels = 0;
+  int relaxType = -1;  // -1: hypre's default (l1-GS forward down, backward up)
+  int reuseSetup = 1;
+
+  // FatalError at the keyword's line for an unknown name or an out-of-range value.
+  static BoomerAMGControls read(const Dictionary& dict);
+};
+
+class BoomerAMG {
+ public:
+  explicit BoomerAMG(const BoomerAMGControls& controls) : controls_(controls) {}
+  ~BoomerAMG();
+  BoomerAMG(const BoomerAMG&) = delete;
+  BoomerAMG& operator=(const BoomerAMG&) = delete;
+
+  // Call before the Krylov setup for a matrix of global rows [firstRow, firstRow + nRows):
+  // returns the preconditioner-setup function to hand to the Krylov solver, either
+  // HYPRE_BoomerAMGSetup on a fresh hierarchy or a no-op that keeps the current one.
+  HYPRE_PtrToParSolverFcn prepare(long firstRow, long nRows);
+
+  HYPRE_Solver handle() const { return amg_; }
+  static HYPRE_PtrToParSolverFcn solveFunction() { return HYPRE_BoomerAMGSolve; }
+
+  int hierarchiesBuilt() const { return built_; }  // for tests and diagnostics
+  bool lastReused() const { return lastReused_; }
+
+ private:
+  void create();
+  void destroy();
+
+  BoomerAMGControls controls_;
+  HYPRE_Solver amg_ = nullptr;
+  long firstRow_ = -1, nRows_ = -1;  // the matrix the hierarchy was built for
+  int solvesWithHierarchy_ = 0;
+  int built_ = 0;
+  bool lastReused_ = false;
+};
+
+}  // namespace isph

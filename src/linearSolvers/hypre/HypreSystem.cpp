@@ -1,0 +1,86 @@
+#include "linearSolvers/hypre/HypreSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <limits>
+#include <numeric>
+
+#include "core/Error.hpp"
+#include "linearSolvers/hypre/HypreError.hpp"
+
+namespace isph {
+
+namespace {
+
+// hypre's global indices are HYPRE_BigInt (int in Debian's build): check the range fits.
+void checkRange(long first, long n) {
+  if (first < 0 || first + n - 1 > std::numeric_limits<HYPRE_BigInt>::max()) {
+    fatalError(fmt::format("hypre: rows [{}, {}) do not fit hypre's {}-byte global indices", first,
+                           first + n, sizeof(HYPRE_BigInt)));
+  }
+}
+
+std::vector<HYPRE_BigInt> rowNumbers(long first, std::size_t n) {
+  std::vector<HYPRE_BigInt> rows(n);
+  std::iota(rows.begin(), rows.end(), static_cast<HYPRE_BigInt>(first));
+  return rows;
+}
+
+}  // namespace
+
+HypreMatrix::HypreMatrix(const SparseSystem& A) {
+  const int n = A.nRows();
+  checkRange(A.firstRow, n);
+  const auto first = static_cast<HYPRE_BigInt>(A.firstRow);
+  const HYPRE_BigInt last = first + n - 1;
+
+  std::vector<HYPRE_Int> rowSizes(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) rowSizes[i] = A.rowStart[i + 1] - A.rowStart[i];
+  const std::vector<HYPRE_BigInt> rows = rowNumbers(A.firstRow, rowSizes.size());
+  const std::vector<HYPRE_BigInt> cols(A.columns.begin(), A.columns.end());
+
+  HYPRE_IJMatrix ij = nullptr;
+  hypreCheck(HYPRE_IJMatrixCreate(MPI_COMM_WORLD, first, last, first, last, &ij),
+             "HYPRE_IJMatrixCreate");
+  ij_.reset(ij);
+  hypreCheck(HYPRE_IJMatrixSetObjectType(ij, HYPRE_PARCSR), "HYPRE_IJMatrixSetObjectType");
+  hypreCheck(HYPRE_IJMatrixSetRowSizes(ij, rowSizes.data()), "HYPRE_IJMatrixSetRowSizes");
+  hypreCheck(HYPRE_IJMatrixInitialize(ij), "HYPRE_IJMatrixInitialize");
+  // All rows in one call, straight from the CSR arrays (ncols is not const in hypre's API).
+  hypreCheck(
+      HYPRE_IJMatrixSetValues(ij, n, rowSizes.data(), rows.data(), cols.data(), A.values.data()),
+      "HYPRE_IJMatrixSetValues");
+  hypreCheck(HYPRE_IJMatrixAssemble(ij), "HYPRE_IJMatrixAssemble");
+  void* object = nullptr;
+  hypreCheck(HYPRE_IJMatrixGetObject(ij, &object), "HYPRE_IJMatrixGetObject");
+  parcsr_ = static_cast<HYPRE_ParCSRMatrix>(object);
+}
+
+HypreVector::HypreVector(long firstRow, const std::vector<double>& values)
+    : rows_(rowNumbers(firstRow, values.size())) {
+  const auto n = static_cast<long>(values.size());
+  checkRange(firstRow, n);
+  const auto first = static_cast<HYPRE_BigInt>(firstRow);
+  HYPRE_IJVector ij = nullptr;
+  hypreCheck(
+      HYPRE_IJVectorCreate(MPI_COMM_WORLD, first, static_cast<HYPRE_BigInt>(first + n - 1), &ij),
+      "HYPRE_IJVectorCreate");
+  ij_.reset(ij);
+  hypreCheck(HYPRE_IJVectorSetObjectType(ij, HYPRE_PARCSR), "HYPRE_IJVectorSetObjectType");
+  hypreCheck(HYPRE_IJVectorInitialize(ij), "HYPRE_IJVectorInitialize");
+  hypreCheck(HYPRE_IJVectorSetValues(ij, static_cast<HYPRE_Int>(n), rows_.data(), values.data()),
+             "HYPRE_IJVectorSetValues");
+  hypreCheck(HYPRE_IJVectorAssemble(ij), "HYPRE_IJVectorAssemble");
+  void* object = nullptr;
+  hypreCheck(HYPRE_IJVectorGetObject(ij, &object), "HYPRE_IJVectorGetObject");
+  par_ = static_cast<HYPRE_ParVector>(object);
+}
+
+void HypreVector::copyTo(std::vector<double>& values) const {
+  values.resize(rows_.size());
+  hypreCheck(HYPRE_IJVectorGetValues(ij_.get(), static_cast<HYPRE_Int>(rows_.size()), rows_.data(),
+                                     values.data()),
+             "HYPRE_IJVectorGetValues");
+}
+
+}  // namespace isph

@@ -1,0 +1,95 @@
+// reuseSetup: a BoomerAMG hierarchy kept across a sequence of slightly changed matrices (as
+// the PPE changes from step to step) still preconditions PCG to the same tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "LatticePoisson.hpp"
+#include "SolverTestHelpers.hpp"
+#include "linearSolvers/hypre/HypreKrylovSolver.hpp"
+
+namespace isph::test {
+namespace {
+
+// The lattice matrix with each off-diagonal pair scaled by 1 + eps * (smooth pattern),
+// kept symmetric, the diagonal adjusted to stay the row sum of the off-diagonals' magnitude
+// plus the Dirichlet part; step k shifts the pattern.
+SparseSystem perturbed(const SparseSystem& base, int step, double eps) {
+  SparseSystem A = base;
+  for (int i = 0; i < A.nRows(); ++i) {
+    double change = 0.0;
+    int diagonalAt = -1;
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const long j = A.columns[k] - A.firstRow;
+      if (j == i) {
+        diagonalAt = k;
+        continue;
+      }
+      const double factor = 1.0 + eps * std::sin(0.01 * static_cast<double>(i + j) + step);
+      change += A.values[k] * (factor - 1.0);
+      A.values[k] *= factor;
+    }
+    A.values[diagonalAt] -= change;
+  }
+  return A;
+}
+
+const HypreKrylovSolver& asHypre(const LinearSolver& s) {
+  return dynamic_cast<const HypreKrylovSolver&>(s);
+}
+
+TEST(ReuseSetup, PerturbedSequenceConvergesWithOneHierarchy) {
+  const SparseSystem base = latticePoisson(80, Stencil::Sph21);
+  const auto reuse = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 5;");
+  const auto fresh = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 1;");
+  std::vector<double> xReuse, xFresh;
+  for (int step = 0; step < 5; ++step) {
+    const SparseSystem A = perturbed(base, step, 0.05);
+    const auto pReuse = reuse->solve(A, xReuse);  // warm-started from the previous step
+    const auto pFresh = fresh->solve(A, xFresh);
+    ASSERT_TRUE(pReuse.converged) << "step " << step << ": " << pReuse.str();
+    ASSERT_TRUE(pFresh.converged) << "step " << step << ": " << pFresh.str();
+    EXPECT_LE(pReuse.finalResidual, 1e-8);
+    EXPECT_LE(relativeDifference(xReuse, exactSolution(A)), 1e-7) << "step " << step;
+    EXPECT_LE(pReuse.iterations, 2 * pFresh.iterations + 5)
+        << pReuse.str() << " vs " << pFresh.str();
+    EXPECT_EQ(asHypre(*reuse).amg()->lastReused(), step > 0);
+  }
+  EXPECT_EQ(asHypre(*reuse).amg()->hierarchiesBuilt(), 1);
+  EXPECT_EQ(asHypre(*fresh).amg()->hierarchiesBuilt(), 5);
+}
+
+TEST(ReuseSetup, HierarchyIsRebuiltAfterNSolvesAndForANewSize) {
+  const auto solver = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 2;");
+  const auto& amg = *asHypre(*solver).amg();
+  const SparseSystem A = latticePoisson(30, Stencil::FivePoint);
+  std::vector<double> x;
+  for (int i = 0; i < 3; ++i) {
+    x.clear();
+    ASSERT_TRUE(solver->solve(A, x).converged);
+  }
+  EXPECT_EQ(amg.hierarchiesBuilt(), 2);  // solves 1-2 share one, solve 3 builds the next
+  const SparseSystem B = latticePoisson(31, Stencil::FivePoint);
+  x.clear();
+  const auto perf = solver->solve(B, x);
+  EXPECT_TRUE(perf.converged) << perf.str();
+  EXPECT_EQ(amg.hierarchiesBuilt(), 3);  // another size: rebuilt although one reuse was left
+  EXPECT_FALSE(amg.lastReused());
+}
+
+TEST(ReuseSetup, ReuseWorksWithGmresAndBiCGSTAB) {
+  const SparseSystem base = latticePoisson(40, Stencil::Sph21);
+  for (const char* entries : {"solver GMRES; reuseSetup 3;", "solver BiCGSTAB; reuseSetup 3;"}) {
+    const auto solver = solverFrom(std::string(entries) + " tolerance 1e-9;");
+    std::vector<double> x;
+    for (int step = 0; step < 3; ++step) {
+      const SparseSystem A = perturbed(base, step, 0.05);
+      const auto perf = solver->solve(A, x);
+      EXPECT_TRUE(perf.converged) << entries << " step " << step << ": " << perf.str();
+    }
+    EXPECT_EQ(asHypre(*solver).amg()->hierarchiesBuilt(), 1) << entries;
+  }
+}
+
+}  // namespace
+}  // namespace isph::test
