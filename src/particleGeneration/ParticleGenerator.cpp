@@ -1,0 +1,167 @@
+#include "particleGeneration/ParticleGenerator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "particleGeneration/LithostaticPressure.hpp"
+#include "particleGeneration/RegionFilling.hpp"
+#include "particleGeneration/SpatialHash.hpp"
+#include "particleGeneration/WallClearance.hpp"
+#include "particleGeneration/WallOrientation.hpp"
+
+namespace isph {
+
+namespace {
+
+void checkRegionsHoldSites(const Scene& scene, const std::vector<RegionSites>& sites,
+                           const Lattice& lattice) {
+  for (std::size_t r = 0; r < sites.size(); ++r) {
+    if (sites[r].inside > 0) continue;
+    const RegionSpec& region = scene.regions[r];
+    fatalIOError(
+        region.where,
+        fmt::format("region '{}' ({}, area {:.4g} m²) holds no lattice site at spacing {} (one "
+                    "site stands for {:.4g} m²): make it larger or the spacing smaller",
+                    region.name, region.shape->type(), region.shape->measure(), scene.spacing,
+                    lattice.siteArea()));
+  }
+}
+
+std::string sideText(const WallSurface& surface, const WallSide& side) {
+  if (surface.isClosed()) return "outside (solid)";
+  const std::string where = side.reversed ? "right" : "left";
+  if (!side.automatic) return where;
+  return fmt::format("{} (auto: material at {} probes left, {} right)", where, side.probesLeft,
+                     side.probesRight);
+}
+
+// Smallest distance between particles of the cloud (scene frame). Lattice sites are dx apart,
+// so only pairs with a wall or dummy particle need a search, and only for material within dx
+// of a wall surface (wall particles lie on surfaces, dummies behind them).
+void closestPair(const std::vector<Vec2>& material, const std::vector<double>& nearestSurface,
+                 const std::vector<WallParticle>& walls, double dx, GenerationResult& result) {
+  result.closestPair = dx;
+  result.closestPairKinds = "material-material";
+  SpatialHash hash(dx);
+  for (const WallParticle& w : walls) {
+    const double d = hash.nearestDistance(w.position, dx);
+    if (d < result.closestPair) {
+      result.closestPair = d;
+      result.closestPairKinds = "wall-wall";
+    }
+    hash.insert(w.position);
+  }
+  double nearest = dx;
+  const long n = static_cast<long>(material.size());
+#pragma omp parallel for reduction(min : nearest)
+  for (long k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (nearestSurface[i] < dx) nearest = std::min(nearest, hash.nearestDistance(material[i], dx));
+  }
+  if (nearest < result.closestPair) {
+    result.closestPair = nearest;
+    result.closestPairKinds = "material-wall";
+  }
+}
+
+}  // namespace
+
+GenerationResult generateParticles(const Scene& scene) {
+  const double dx = scene.spacing;
+  const Lattice lattice(scene.lattice, dx, scene.latticeOrigin);
+
+  std::vector<const Region*> shapes;
+  for (const RegionSpec& r : scene.regions) shapes.push_back(r.shape.get());
+  std::vector<RegionSites> sites = fillRegions(shapes, lattice);
+  checkRegionsHoldSites(scene, sites, lattice);
+
+  std::vector<WallSide> sides;
+  const std::vector<WallSurface> walls =
+      orientWalls(scene.walls, shapes, dx, scene.wallLayers * dx, sides);
+  const WallLayerResult wallLayers = generateWallLayers(walls, scene.wallLayers, dx);
+
+  GenerationResult result;
+  std::vector<Vec2> materialPositions;
+  std::vector<double> nearestSurface, allNearest;
+  for (std::size_t r = 0; r < sites.size(); ++r) {
+    const RegionSpec& spec = scene.regions[r];
+    RegionReport report;
+    report.name = spec.name;
+    report.type = spec.shape->type();
+    report.material = scene.materials.at(static_cast<std::size_t>(spec.material));
+    report.density = spec.density;
+    report.inside = sites[r].inside;
+    for (std::size_t q = 0; q < r; ++q) {
+      if (sites[r].lostTo[q] > 0)
+        report.lostTo.emplace_back(scene.regions[q].name, sites[r].lostTo[q]);
+    }
+    const ClearanceCount removed =
+        removeBlockedSites(sites[r].sites, walls, scene.wallClearance * dx, nearestSurface, dx);
+    report.inSolid = removed.inSolid;
+    report.nearWall = removed.nearWall;
+    report.particles = static_cast<long>(sites[r].sites.size());
+    report.geometricArea = spec.shape->measure();
+    report.particleArea = static_cast<double>(report.particles) * lattice.siteArea();
+    report.mass = report.particleArea * spec.density;
+    result.regions.push_back(std::move(report));
+    materialPositions.insert(materialPositions.end(), sites[r].sites.begin(), sites[r].sites.end());
+    allNearest.insert(allNearest.end(), nearestSurface.begin(), nearestSurface.end());
+  }
+  closestPair(materialPositions, allNearest, wallLayers.particles, dx, result);
+
+  // The cloud: material particles by region, then wall and dummy particles by wall.
+  ParticleCloud& cloud = result.cloud;
+  cloud.name = scene.cloudName;
+  cloud.properties.materials = scene.materials;
+  cloud.properties.patches = scene.patches;
+  cloud.properties.dimension = scene.dimension;
+  cloud.properties.spacing = dx;
+  cloud.properties.lattice = toString(scene.lattice);
+  const std::size_t nMaterial = materialPositions.size();
+  cloud.reserve(nMaterial + wallLayers.particles.size());
+  const Transform& T = scene.transform;
+  label id = 0;
+  for (std::size_t r = 0; r < sites.size(); ++r) {
+    const RegionSpec& spec = scene.regions[r];
+    const double mass = spec.density * lattice.siteArea();
+    const Vec3 U = T.vector(spec.initialVelocity);
+    for (const Vec2& s : sites[r].sites) {
+      const Vec3 x = T.point(toVec3(s));
+      cloud.push_back(x, id++, U, 0.0, spec.material, ParticleKind::material, -1, Vec3::Zero(),
+                      mass);
+      result.regions[r].bounds.extend(x);
+    }
+  }
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    WallReport report;
+    report.name = scene.walls[w].name;
+    report.patch = scene.patches.at(static_cast<std::size_t>(scene.walls[w].patch)).name;
+    report.type = walls[w].type();
+    report.side = sideText(walls[w], sides[w]);
+    report.frictionAngle =
+        scene.patches[static_cast<std::size_t>(scene.walls[w].patch)].frictionAngle;
+    report.stats = wallLayers.stats[w];
+    result.walls.push_back(std::move(report));
+  }
+  for (const WallParticle& p : wallLayers.particles) {
+    const WallSpec& spec = scene.walls[static_cast<std::size_t>(p.wall)];
+    const Vec3 x = T.point(toVec3(p.position));
+    cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1,
+                    p.isWall ? ParticleKind::wall : ParticleKind::dummy, spec.patch,
+                    T.vector(toVec3(p.normal)), spec.density * dx * dx);
+    result.walls[static_cast<std::size_t>(p.wall)].bounds.extend(x);
+  }
+
+  if (scene.initialPressure == InitialPressure::lithostatic) {
+    std::vector<double> densities;
+    for (const RegionSpec& r : scene.regions) densities.push_back(r.density);
+    const double g = scene.gravity.norm();
+    const Vec2 up = toVec2(T.inverseVector(-scene.gravity / g));
+    const std::vector<double> p = lithostaticPressure(materialPositions, shapes, densities, up, g);
+    std::copy(p.begin(), p.end(), cloud.p.begin());
+  }
+  return result;
+}
+
+}  // namespace isph

@@ -1,0 +1,57 @@
+#pragma once
+// A scene to fill with particles: the lattice, material regions, walls and initial state, as
+// system/particleMeshDict describes it (see SceneReader.hpp) or as code builds it (tests,
+// benchmarks). Coordinates are those of the scene frame; `transform` maps them to the case.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "geometry/Region.hpp"
+#include "geometry/Transform.hpp"
+#include "particleGeneration/Lattice.hpp"
+#include "particleGeneration/WallSurface.hpp"
+#include "particles/ParticleCloud.hpp"
+
+namespace isph {
+
+enum class InitialPressure { zero, lithostatic };
+enum class MaterialSide { left, right, automatic };
+
+struct RegionSpec {
+  std::string name;
+  std::unique_ptr<Region> shape;
+  label material = 0;                   // index into Scene::materials
+  double density = 0;                   // rho of that material [kg/m³]
+  Vec3 initialVelocity = Vec3::Zero();  // scene frame
+  SourceLocation where;                 // the region's entry (for errors)
+};
+
+struct WallSpec {
+  std::string name;
+  std::unique_ptr<WallSurface> surface;
+  label patch = 0;                         // index into Scene::patches
+  MaterialSide side = MaterialSide::left;  // open polylines only; closed ones have it outside
+  double density = 0;                      // mass of a wall or dummy particle = density dx²
+  SourceLocation where;
+};
+
+struct Scene {
+  double spacing = 0;  // dx [m]
+  std::string cloudName = "particles";
+  int dimension = 2;
+  LatticeType lattice = LatticeType::square;
+  Vec2 latticeOrigin = Vec2::Zero();
+  int wallLayers = 3;          // wall layer + dummy layers
+  double wallClearance = 0.5;  // material sites closer than this × dx to a wall surface are removed
+  InitialPressure initialPressure = InitialPressure::zero;
+  Vec3 gravity = Vec3::Zero();  // case frame (constant/g); needed for lithostatic pressure
+  Transform transform;          // scene frame -> case frame
+
+  std::vector<std::string> materials;  // material labels (constant/materialProperties order)
+  std::vector<PatchInfo> patches;      // patch labels
+  std::vector<RegionSpec> regions;     // first listed wins where they overlap
+  std::vector<WallSpec> walls;
+};
+
+}  // namespace isph

@@ -1,0 +1,226 @@
+#include "particleGeneration/SceneReader.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "core/Log.hpp"
+#include "core/Registry.hpp"
+#include "core/dictionary/Dictionary.hpp"
+#include "particleGeneration/MaterialTable.hpp"
+#include "particleGeneration/ShapeInput.hpp"
+#include "sph/kernels/Kernel.hpp"
+
+namespace isph {
+
+namespace {
+
+using RegionRegistry = Registry<Region, const Dictionary&, const ShapeContext&>;
+using WallRegistry = Registry<WallSurface, const Dictionary&, const ShapeContext&>;
+
+[[noreturn]] void invalid(const Dictionary& dict, std::string_view key, const std::string& what) {
+  const Entry* e = dict.findEntry(key);
+  fatalIOError(e ? e->location() : dict.location(),
+               fmt::format("keyword '{}' in {}: {}", key, dict.name(), what));
+}
+
+const Dictionary& entryDict(const Entry& e, const Dictionary& parent, const char* example) {
+  if (!e.isDict()) {
+    fatalIOError(e.location(),
+                 fmt::format("entry '{}' in {}: expected a sub-dictionary, for example\n    {} {}",
+                             e.key(), parent.name(), e.key(), example));
+  }
+  return e.dict();
+}
+
+void readLattice(const Dictionary& dict, Scene& scene) {
+  scene.spacing = dict.get<double>("spacing");
+  if (!(scene.spacing > 0))
+    invalid(dict, "spacing", fmt::format("must be positive, found {}", scene.spacing));
+  scene.cloudName = dict.getOrDefault<std::string>("cloud", "particles");
+  scene.dimension = dict.getOrDefault<int>("dimension", 2);
+  if (scene.dimension != 2) {
+    invalid(dict, "dimension",
+            fmt::format("only 2 (plane strain in x-y) is available, found {}", scene.dimension));
+  }
+  scene.lattice =
+      dict.getChoiceOrDefault("lattice", {"square", "hexagonal"}, "square") == "hexagonal"
+          ? LatticeType::hexagonal
+          : LatticeType::square;
+  scene.latticeOrigin = toVec2(dict.getOrDefault<Vec3>("latticeOrigin", Vec3::Zero()));
+  scene.wallClearance = dict.getOrDefault("wallClearance", 0.5);
+  if (!(scene.wallClearance >= 0 && scene.wallClearance <= 2)) {
+    invalid(dict, "wallClearance",
+            fmt::format("must be between 0 and 2 (× spacing), found {}", scene.wallClearance));
+  }
+}
+
+void readWallLayers(const Dictionary& dict, const std::filesystem::path& caseDir, Scene& scene) {
+  const std::filesystem::path schemesFile = caseDir / "system" / "isphSchemes";
+  const Dictionary schemes = std::filesystem::exists(schemesFile)
+                                 ? Dictionary::readFile(schemesFile)
+                                 : Dictionary(schemesFile.string(), SourceLocation{});
+  const auto kernel = makeKernel(schemes, scene.spacing, scene.dimension);
+  const int needed = kernelWallLayers(kernel->supportRadius(), scene.spacing);
+  const std::string why =
+      fmt::format("kernel {} with h/dx = {:.4g}: support {:.4g} dx, ceil = {}", kernel->name(),
+                  kernel->h() / scene.spacing, kernel->supportRadius() / scene.spacing, needed);
+  if (const auto layers = dict.getOptional<int>("wallLayers")) {
+    if (*layers < 1)
+      invalid(dict, "wallLayers", fmt::format("must be at least 1, found {}", *layers));
+    scene.wallLayers = *layers;
+    info("Wall layers: {} (wallLayers in particleMeshDict; the {} layers)", *layers, why);
+    if (*layers < needed) {
+      warning(fmt::format(
+                  "wallLayers {} does not fill the kernel support ({}): fluid near walls will miss "
+                  "neighbours",
+                  *layers, why),
+              dict.findEntry("wallLayers")->location());
+    }
+  } else {
+    scene.wallLayers = needed;
+    info("Wall layers: {} (1 wall + {} dummy; {})", needed, needed - 1, why);
+  }
+}
+
+void readTransform(const Dictionary& dict, Scene& scene) {
+  const Dictionary* t = dict.findDict("transform");
+  dict.markRead("transform");
+  if (!t) {
+    if (dict.found("transform"))
+      invalid(dict, "transform", "expected a sub-dictionary { rotate 45; ... }");
+    return;
+  }
+  const double angle = t->getOrDefault("rotate", 0.0);
+  const Vec3 origin = t->getOrDefault<Vec3>("origin", Vec3::Zero());
+  const Vec3 translate = t->getOrDefault<Vec3>("translate", Vec3::Zero());
+  scene.transform = Transform(angle, origin, translate);
+  t->checkKeywords();
+}
+
+void readInitialState(const Dictionary& dict, const std::filesystem::path& caseDir, Scene& scene) {
+  scene.initialPressure =
+      dict.getChoiceOrDefault("initialPressure", {"zero", "lithostatic"}, "zero") == "lithostatic"
+          ? InitialPressure::lithostatic
+          : InitialPressure::zero;
+  if (scene.initialPressure != InitialPressure::lithostatic) return;
+  const std::filesystem::path gFile = caseDir / "constant" / "g";
+  if (!std::filesystem::exists(gFile)) {
+    invalid(dict, "initialPressure",
+            fmt::format("lithostatic pressure needs gravity from {}, which does not exist "
+                        "(value (0 -9.81 0);)",
+                        gFile.string()));
+  }
+  const Dictionary g = Dictionary::readFile(gFile);
+  scene.gravity = g.get<Vec3>("value");
+  if (scene.gravity.head<2>().norm() == 0) {
+    invalid(dict, "initialPressure",
+            fmt::format("lithostatic pressure needs gravity in the x-y plane; {} gives {}",
+                        gFile.string(), ValueTraits<Vec3>::write(scene.gravity)));
+  }
+}
+
+void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
+                 const ShapeContext& context, const Vec3& initialVelocity, Scene& scene) {
+  const Dictionary& regions = dict.subDict("regions");
+  if (regions.size() == 0)
+    warning("no material regions: the cloud will hold walls only", regions.location());
+  MaterialTable table;
+  bool tableRead = false;
+  for (const Entry& e : regions.entries()) {
+    const Dictionary& d =
+        entryDict(e, regions, "{ type box; min (0 0 0); max (1 1 0); material sand; }");
+    RegionSpec r;
+    r.name = e.key();
+    r.where = e.location();
+    const std::string type = d.get<std::string>("type");
+    r.shape =
+        RegionRegistry::create(type, "region type", d.findEntry("type")->location(), d, context);
+    const std::string material = d.get<std::string>("material");
+    if (!tableRead) {
+      table = MaterialTable::read(caseDir / "constant" / "materialProperties");
+      scene.materials = table.names();
+      tableRead = true;
+    }
+    r.material = table.index(material, d.findEntry("material")->location());
+    r.density = table.density(r.material);
+    r.initialVelocity = d.getOptional<Vec3>("initialVelocity").value_or(initialVelocity);
+    d.checkKeywords();
+    scene.regions.push_back(std::move(r));
+  }
+}
+
+label patchLabel(Scene& scene, const std::string& name, double frictionAngle, const Dictionary& d) {
+  for (std::size_t k = 0; k < scene.patches.size(); ++k) {
+    if (scene.patches[k].name != name) continue;
+    if (scene.patches[k].frictionAngle != frictionAngle) {
+      invalid(d, "frictionAngle",
+              fmt::format("patch '{}' already has frictionAngle {}; walls of one patch share it",
+                          name, scene.patches[k].frictionAngle));
+    }
+    return static_cast<label>(k);
+  }
+  scene.patches.push_back({name, frictionAngle});
+  return static_cast<label>(scene.patches.size() - 1);
+}
+
+void readWalls(const Dictionary& dict, const ShapeContext& context, Scene& scene) {
+  const Dictionary walls = dict.subDictOrEmpty("walls");
+  dict.markRead("walls");
+  const double defaultDensity = scene.regions.empty() ? 1000.0 : scene.regions.front().density;
+  for (const Entry& e : walls.entries()) {
+    const Dictionary& d =
+        entryDict(e, walls, "{ type polyline; points ((0 0 0) (1 0 0)); frictionAngle 25; }");
+    WallSpec w;
+    w.name = e.key();
+    w.where = e.location();
+    const std::string type = d.get<std::string>("type");
+    w.surface =
+        WallRegistry::create(type, "wall type", d.findEntry("type")->location(), d, context);
+    const double phi = d.get<double>("frictionAngle");
+    if (!(phi >= 0 && phi < 90))
+      invalid(d, "frictionAngle", fmt::format("must be in [0, 90) degrees, found {}", phi));
+    w.patch = patchLabel(scene, d.getOrDefault<std::string>("patch", e.key()), phi, d);
+    if (w.surface->isClosed()) {
+      if (d.found("materialSide")) {
+        invalid(d, "materialSide",
+                fmt::format("a {} wall is a solid with the material outside; materialSide is for "
+                            "polylines",
+                            type));
+      }
+    } else {
+      const std::string side =
+          d.getChoiceOrDefault("materialSide", {"left", "right", "auto"}, "auto");
+      w.side = side == "left"    ? MaterialSide::left
+               : side == "right" ? MaterialSide::right
+                                 : MaterialSide::automatic;
+    }
+    w.density = d.getOrDefault("rho", defaultDensity);
+    if (!(w.density > 0)) invalid(d, "rho", fmt::format("must be positive, found {}", w.density));
+    d.checkKeywords();
+    scene.walls.push_back(std::move(w));
+  }
+}
+
+}  // namespace
+
+int kernelWallLayers(double supportRadius, double dx) {
+  return std::max(1, static_cast<int>(std::ceil(supportRadius / dx - 1e-9)));
+}
+
+Scene readScene(const std::filesystem::path& caseDir) {
+  const Dictionary dict = Dictionary::readFile(caseDir / "system" / "particleMeshDict");
+  Scene scene;
+  const ShapeContext context{caseDir};
+  readLattice(dict, scene);
+  readWallLayers(dict, caseDir, scene);
+  readTransform(dict, scene);
+  const Vec3 initialVelocity = dict.getOrDefault<Vec3>("initialVelocity", Vec3::Zero());
+  readInitialState(dict, caseDir, scene);
+  readRegions(dict, caseDir, context, initialVelocity, scene);
+  readWalls(dict, context, scene);
+  dict.checkKeywords();
+  return scene;
+}
+
+}  // namespace isph

@@ -1,0 +1,63 @@
+#pragma once
+// Reads the scene of a case from system/particleMeshDict (particleMesh's input). Coordinates
+// are (x y 0) in the scene frame (plane strain, z = 0); `transform` maps them to the case.
+//
+//   spacing         0.0036;      // dx [m]; required, > 0
+//   cloud           particles;   // the cloud's name: 0/lagrangian/<cloud>
+//   dimension       2;           // plane strain in x-y (3D is not available yet)
+//   lattice         square;      // square (dx²) | hexagonal ((√3/2) dx² per site)
+//   latticeOrigin   (0 0 0);     // a corner of a lattice cell: sites at origin + (i+½, j+½) cells
+//   wallLayers      3;           // wall + dummy layers; default ceil(kernel support / dx) from
+//                                // system/isphSchemes (kernel WendlandC2, hOverDx 1.3 -> 3)
+//   wallClearance   0.5;         // material sites closer than this × dx to a wall surface go
+//   initialPressure zero;        // zero | lithostatic (p = ∫ρ|g|dz along g; needs constant/g)
+//   initialVelocity (0 0 0);     // of the material particles, scene frame
+//   transform                    // optional: x' = R(rotate) (x - origin) + origin + translate
+//   {
+//       rotate      -45;         // degrees, counter-clockwise about z
+//       origin      (0 0 0);
+//       translate   (0 0 0);
+//   }
+//   regions                      // material; the first listed wins where they overlap
+//   {
+//       <name>
+//       {
+//           type        box;     // box | polygon | profile (RegionTypes.cpp)
+//           min (0 0 0); max (0.5 0.242 0);       // box
+//           points ((0 0 0) (1 0 0) (0 1 0));      // polygon (or pointsFile "constant/a.csv")
+//           upper (...); lower (...);             // profile: material between them; or
+//           upperFile "constant/ground.csv";      //   from CSV files (x,y columns); an
+//           thickness 0.59;                       //   optional thickness caps it at lower + t
+//           material    sand;    // a material of constant/materialProperties (its rho)
+//           initialVelocity (0 0 0);              // optional, overrides the global one
+//       }
+//   }
+//   walls                        // solid boundaries, each a patch
+//   {
+//       <name>
+//       {
+//           type        polyline;  // polyline | box | polygon (WallTypes.cpp)
+//           points ((0 0.4 0) (0 0 0) (2.4 0 0)); // polyline or polygon (or pointsFile)
+//           min (2.3 0 0); max (2.32 0.3 0);      // box
+//           frictionAngle 25;    // Coulomb wall friction [deg]; required
+//           patch       <name>;  // patch name (default: the wall's name; walls may share one)
+//           materialSide auto;   // polyline only: left | right | auto (walking first -> last)
+//           rho         1379;    // wall and dummy mass = rho dx² (default: first region's rho)
+//       }
+//   }
+//
+// Also reads constant/materialProperties (rho of the materials used), system/isphSchemes
+// (optional) and constant/g (for lithostatic pressure). Every default used is echoed in the
+// log; every bad input is a FatalIOError naming the file, line and keyword.
+#include <filesystem>
+
+#include "particleGeneration/Scene.hpp"
+
+namespace isph {
+
+Scene readScene(const std::filesystem::path& caseDir);
+
+// ceil(support radius / dx): the wall + dummy layers that fill the kernel support.
+int kernelWallLayers(double supportRadius, double dx);
+
+}  // namespace isph
