@@ -1,0 +1,88 @@
+// sampleForces: the force the material exerts on wall patches, for the selected times, set by
+// set as system/sampleForcesDict names them; writes postProcessing/sampleForces/<firstTime>/
+// <set>.dat (and <set>.png with -plot). The same routine as the solver's forces function object.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/Log.hpp"
+#include "core/app/Application.hpp"
+#include "core/app/TimeOptions.hpp"
+#include "core/dictionary/Dictionary.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "particles/CloudIO.hpp"
+#include "postProcessing/forces/ForcePlot.hpp"
+#include "postProcessing/forces/SetForces.hpp"
+#include "postProcessing/forces/WallStress.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const isph::ApplicationSpec spec{
+    .name = "sampleForces",
+    .description = "Forces of the material on the wall patches of each set in system/sampleForcesDict.",
+    .options = {{"plot", "", "also draw <set>.png with gnuplot (force against time)"},
+                {"cloud", "name", "the cloud (default: `cloud` in the dictionary, else particles)"}},
+    .arguments = {},
+    .timeOptions = true,
+};
+
+// The kernel that carries τ to the walls: the solver's (system/isphSchemes) when the case has one.
+std::unique_ptr<isph::Kernel> kernelFor(const fs::path& casePath, const isph::CloudProperties& props) {
+  const fs::path schemes = casePath / "system" / "isphSchemes";
+  const isph::Dictionary dict =
+      fs::exists(schemes) ? isph::Dictionary::readFile(schemes) : isph::Dictionary("isphSchemes");
+  return isph::makeKernel(dict, props.spacing, props.dimension);
+}
+
+void run(const isph::ArgList& args) {
+  const isph::Dictionary dict = isph::Dictionary::readFile(args.casePath() / "system" / "sampleForcesDict");
+  const std::string cloudName = args.option("cloud").value_or(dict.getOrDefault("cloud", "particles"));
+  const auto sets = isph::readForceSets(dict, {"cloud"});
+  const auto times = isph::selectedTimes(args);
+  if (times.empty()) return;
+
+  std::vector<isph::ForceTable> tables;
+  std::vector<std::string> text(sets.size());
+  std::unique_ptr<isph::Kernel> kernel;
+  for (const auto& time : times) {
+    isph::info("Time = {}", time.name);
+    const fs::path timeDir = args.casePath() / time.name;
+    const isph::ParticleCloud cloud = isph::readCloud(timeDir, cloudName);
+    const auto tau = isph::readDeviatoricStress(timeDir, cloudName, cloud.size());
+    if (tau && !kernel) kernel = kernelFor(args.casePath(), cloud.properties);
+    const auto forces = isph::setForces(
+        {.cloud = cloud, .sets = sets, .tau = tau ? &*tau : nullptr, .kernel = kernel.get(), .neighbours = nullptr});
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      if (tables.size() == s) {
+        tables.emplace_back(sets[s], cloud.properties.dimension);
+        text[s] = tables[s].header(forces[s]);
+      }
+      text[s] += tables[s].row(time.value, forces[s]);
+      const auto& f = forces[s];
+      isph::info("    {}: Fn {:.6g} (pressure {:.6g}, deviatoric {:.6g}), Ft {:.6g} [{}] on {} wall particles",
+                 sets[s].name, f.normal(f.total), f.normal(f.pressure), f.normal(f.deviatoric), f.tangential(f.total),
+                 tables[s].columns()[1].unit, f.nWall);
+    }
+  }
+
+  const fs::path outDir = args.casePath() / "postProcessing" / "sampleForces" / times.front().name;
+  fs::create_directories(outDir);
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    isph::writeFileAtomic(outDir / (sets[s].name + ".dat"), text[s]);
+    isph::info("\nWritten {}", (outDir / (sets[s].name + ".dat")).string());
+  }
+  if (!args.found("plot")) return;
+  for (std::size_t s = 0; s < sets.size(); ++s) {  // after every .dat is written: gnuplot may be missing
+    const fs::path reference = sets[s].reference ? args.casePath() / *sets[s].reference : fs::path();
+    const fs::path png = outDir / (sets[s].name + ".png");
+    const fs::path dat = outDir / (sets[s].name + ".dat");
+    isph::plotForces(sets[s], tables[s], {.dat = dat, .png = png, .reference = reference});
+    isph::info("Written {}", png.string());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) { return isph::runApplication(spec, argc, argv, run); }

@@ -1,0 +1,73 @@
+#include "postProcessing/forces/PatchForces.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Geometry>
+
+#include "core/Error.hpp"
+#include "postProcessing/forces/WallStress.hpp"
+
+namespace isph {
+
+double PatchForces::tangential(const Vec3& F) const {
+  if (dimension == 2) return F.dot(tangent);
+  return (F - F.dot(meanNormal) * meanNormal).norm();
+}
+
+PatchForces patchForces(const PatchForceInput& in) {
+  const ParticleCloud& cloud = in.cloud;
+  const CloudProperties& props = cloud.properties;
+  const auto nPatches = static_cast<label>(props.patches.size());
+  for (const label p : in.patches) {
+    if (p < 0 || p >= nPatches) {
+      fatalError(fmt::format("patchForces: patch label {} is out of range 0..{} of cloud '{}'", p, nPatches - 1,
+                             cloud.name));
+    }
+  }
+  if (!(props.spacing > 0)) {
+    fatalError(fmt::format("patchForces: cloud '{}' has spacing {}; expected a positive particle spacing dx",
+                           cloud.name, props.spacing));
+  }
+  if (!(in.width > 0) || (props.dimension == 3 && in.width != 1.0)) {
+    fatalError(fmt::format("patchForces: width {} of a {}D cloud; expected a positive width (2D) or none (3D)",
+                           in.width, props.dimension));
+  }
+  if (in.wallTau && in.wallTau->size() != cloud.size()) {
+    fatalError(fmt::format("patchForces: {} values of the wall stress for {} particles", in.wallTau->size(),
+                           cloud.size()));
+  }
+
+  std::vector<char> inSet(props.patches.size(), 0);
+  for (const label p : in.patches) inSet[static_cast<std::size_t>(p)] = 1;
+
+  const double dx = props.spacing;
+  const double area = props.dimension == 2 ? dx * in.width : dx * dx;
+  const auto wall = static_cast<label>(ParticleKind::wall);
+
+  PatchForces out;
+  out.dimension = props.dimension;
+  Vec3 normalSum = Vec3::Zero();
+  for (std::size_t w = 0; w < cloud.size(); ++w) {
+    if (cloud.kind[w] != wall || cloud.patch[w] < 0 || !inSet[static_cast<std::size_t>(cloud.patch[w])]) continue;
+    const Vec3& n = cloud.normal[w];
+    const Vec3 arm = cloud.positions[w] - in.CofR;
+    const Vec3 fp = -cloud.p[w] * area * n;
+    const Vec3 fd = in.wallTau ? Vec3(area * dotSymm((*in.wallTau)[w], n)) : Vec3::Zero();
+    out.pressure += fp;
+    out.deviatoric += fd;
+    out.momentPressure += arm.cross(fp);
+    out.momentDeviatoric += arm.cross(fd);
+    normalSum += n;
+    ++out.nWall;
+  }
+  out.total = out.pressure + out.deviatoric;
+  out.momentTotal = out.momentPressure + out.momentDeviatoric;
+  // Normals that cancel (two facing walls) leave no meaningful direction: keep n̄ = 0.
+  if (normalSum.norm() > 1e-6 * static_cast<double>(out.nWall)) {
+    out.meanNormal = normalSum.normalized();
+    if (out.dimension == 2) out.tangent = out.meanNormal.cross(Vec3::UnitZ());
+  }
+  return out;
+}
+
+}  // namespace isph

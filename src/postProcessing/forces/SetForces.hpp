@@ -1,0 +1,27 @@
+#pragma once
+// The forces on every set of a dictionary at one time, as sampleForces and the solver's
+// forces function object compute them: patch names resolved against the cloud, the
+// deviatoric stress τ (when the cloud has one) carried to the sets' wall particles, then
+// patchForces per set.
+#include <vector>
+
+#include "postProcessing/forces/ForceSet.hpp"
+#include "postProcessing/forces/PatchForces.hpp"
+#include "sph/kernels/Kernel.hpp"
+#include "sph/neighbours/NeighbourList.hpp"
+
+namespace isph {
+
+struct SetForcesInput {
+  const ParticleCloud& cloud;
+  const std::vector<ForceSet>& sets;
+  const std::vector<SymmTensor>* tau = nullptr;  // per particle (material entries used); null: none
+  const Kernel* kernel = nullptr;                // for the τ average; required when tau is given
+  // The caller's neighbour list over cloud.positions, if it has one (the solver); else one
+  // is built here when tau is given.
+  const NeighbourList* neighbours = nullptr;
+};
+
+std::vector<PatchForces> setForces(const SetForcesInput& in);
+
+}  // namespace isph

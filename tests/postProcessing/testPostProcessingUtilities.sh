@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# sampleForces and toVTK as a user runs them: outputs, -plot with and without gnuplot, and
+# errors that name the file, line and keyword. Usage: testPostProcessingUtilities.sh <bindir> <cases>
+set -u
+bin=$1
+cases=$2
+work=$(mktemp -d "${TMPDIR:-/tmp}/postProcessing.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+fails=0
+total=0
+check() {  # check <description> <command...>: the command must succeed
+  local what=$1; shift
+  total=$((total + 1))
+  if "$@"; then echo "PASS: $what"; else echo "FAIL: $what"; fails=$((fails + 1)); fi
+}
+
+cp -r "$cases/hydrostaticTank" "$work/tank"
+sed -i 's/^spacing .*/spacing 0.05;/' "$work/tank/system/particleMeshDict"
+"$bin/particleMesh" -case "$work/tank" > "$work/log.particleMesh" 2>&1 || { cat "$work/log.particleMesh"; exit 1; }
+cp -r "$work/tank/0" "$work/tank/0.5"
+
+check "sampleForces -help exits 0" bash -c "'$bin/sampleForces' -help | grep -q 'Usage: sampleForces'"
+check "toVTK -help exits 0" bash -c "'$bin/toVTK' -help | grep -q 'Usage: toVTK'"
+
+"$bin/sampleForces" -case "$work/tank" > "$work/log1" 2>&1
+check "sampleForces runs on every time" test $? -eq 0
+dat="$work/tank/postProcessing/sampleForces/0/leftWall.dat"
+check "the .dat is written under the first time" test -s "$dat"
+check "the header names every column with its unit" \
+  grep -q "^# Time \[s\]	Fx \[N/m\]	Fy \[N/m\]	Fn \[N/m\]	Ft \[N/m\]	Fpx \[N/m\].*	Mz \[N m/m\]	Mpz \[N m/m\]	Mdz \[N m/m\]	nWall \[-\]$" "$dat"
+check "one row per time" test "$(grep -vc '^#' "$dat")" -eq 2
+check "a set with a width gives forces in N" grep -q "Fx \[N\]" "$work/tank/postProcessing/sampleForces/0/sideWalls.dat"
+check "no temporary file is left" bash -c "[ -z \"\$(ls -A '$work/tank/postProcessing/sampleForces/0' | grep '^\\.')\" ]"
+
+"$bin/sampleForces" -case "$work/tank" -latestTime > "$work/log2" 2>&1
+check "-latestTime writes under its own time" test -s "$work/tank/postProcessing/sampleForces/0.5/leftWall.dat"
+
+if command -v gnuplot > /dev/null 2>&1; then
+  "$bin/sampleForces" -case "$work/tank" -plot > "$work/log3" 2>&1; rc=$?
+  check "-plot draws a PNG with gnuplot" bash -c "[ $rc -eq 0 ] && head -c 4 '$work/tank/postProcessing/sampleForces/0/leftWall.png' | grep -q PNG"
+else
+  echo "(gnuplot is not installed here: the PNG check is skipped)"
+fi
+rm -rf "$work/tank/postProcessing"
+out=$(PATH=/nonexistent "$bin/sampleForces" -case "$work/tank" -plot 2>&1); rc=$?
+check "-plot without gnuplot exits non-zero and says so" bash -c "[ $rc -ne 0 ] && grep -q 'gnuplot is not installed' <<< \"\$1\"" _ "$out"
+check "... after writing every .dat" test -s "$dat" -a -s "$work/tank/postProcessing/sampleForces/0/sideWalls.dat"
+PATH=/nonexistent "$bin/sampleForces" -case "$work/tank" > /dev/null 2>&1
+check "without -plot gnuplot is not needed" test $? -eq 0
+
+cp "$work/tank/system/sampleForcesDict" "$work/dict.orig"
+sed -i 's/patches     (leftWall);/patches     (leftWal);/' "$work/tank/system/sampleForcesDict"
+out=$("$bin/sampleForces" -case "$work/tank" 2>&1); rc=$?
+check "an unknown patch is an error naming it, the file and the line" \
+  bash -c "[ $rc -ne 0 ] && grep -q \"no patch 'leftWal'\" <<< \"\$1\" && grep -q 'sampleForcesDict, line' <<< \"\$1\" && grep -q 'leftWall' <<< \"\$1\"" _ "$out"
+rm "$work/tank/system/sampleForcesDict"
+out=$("$bin/sampleForces" -case "$work/tank" 2>&1); rc=$?
+check "a missing sampleForcesDict is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q 'sampleForcesDict' <<< \"\$1\"" _ "$out"
+cp "$work/dict.orig" "$work/tank/system/sampleForcesDict"
+
+"$bin/toVTK" -case "$work/tank" > "$work/log4" 2>&1
+check "toVTK converts every time" bash -c "[ -s '$work/tank/VTK/tank_0.vtp' ] && [ -s '$work/tank/VTK/tank_0.5.vtp' ]"
+check "the .pvd lists them in order" bash -c "grep -o 'timestep=\"[^\"]*\"' '$work/tank/VTK/tank.pvd' | tr '\n' ' ' | grep -qx 'timestep=\"0\" timestep=\"0.5\" '"
+out=$("$bin/toVTK" -case "$work/tank" -time 7 2>&1); rc=$?
+check "a time that does not exist warns and writes nothing new" bash -c "[ $rc -eq 0 ] && grep -q 'no time directory selected' <<< \"\$1\"" _ "$out"
+out=$("$bin/toVTK" -case "$work/tank" -cloud sand 2>&1); rc=$?
+check "a missing cloud is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q \"cloud 'sand' not found\" <<< \"\$1\"" _ "$out"
+
+echo "$((total - fails)) passed, $fails failed"
+[ "$fails" -eq 0 ]
