@@ -1,0 +1,52 @@
+// isphLandslideFoam: incompressible SPH for flow-like landslides (the paper's projection
+// method, Eqs. 6-11). Reads the particles of the start time, steps them to endTime and
+// writes time directories as system/controlDict says; every time directory is a restart.
+#include "core/Log.hpp"
+#include "core/app/Application.hpp"
+#include "core/time/Time.hpp"
+#include "isph/IsphSolver.hpp"
+#include "linearSolvers/ParallelEnvironment.hpp"
+
+namespace {
+
+const isph::ApplicationSpec spec{
+    .name = "isphLandslideFoam",
+    .description = "Incompressible SPH (projection method) for flow-like landslides and fluids.",
+    .options = {},
+    .arguments = {},
+};
+
+void run(const isph::ArgList& args) {
+  isph::Time time(args.casePath());
+  isph::Time::installSignalHandlers();
+  isph::IsphSolver solver(time);
+
+  isph::info("\nStarting time loop\n");
+  while (time.run()) {
+    const isph::TimeStepLimits limits = solver.nextDeltaT(time);
+    if (time.settings().adjustTimeStep) time.adjustDeltaT(limits.value());
+    ++time;
+    isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
+               time.settings().adjustTimeStep ? limits.limiting() : "fixed");
+    const isph::StepReport report = solver.step(time);
+    isph::logSolverPerformance(report.ppe);
+    isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  wall safeguard {}  "
+               "wall crossings {}",
+               report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.wallSafeguard,
+               report.wallCrossings);
+    if (time.writeTime()) {
+      solver.write(time);
+      isph::info("    wrote time {}", time.timeName());
+    }
+    isph::info("{}\n", time.executionTimeLine());
+  }
+  isph::info("Wall crossings in the run: {}", solver.wallCrossings());
+  isph::info("Time spent per phase:\n{}", solver.timer().table());
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) {
+  isph::ParallelEnvironment parallel(argc, argv);
+  return isph::runApplication(spec, argc, argv, run);
+}

@@ -1,0 +1,47 @@
+#pragma once
+// Finds the free-surface particles, where the PPE holds p = 0 (the paper: "finding the
+// free surface particles and then equating all stresses to zero"). A particle is on the
+// surface when
+//  - the divergence of position, ∇·r_a = −Σ_b V_b x_ab·∇_a W_ab (≈ d inside), is below the
+//    threshold (Lee et al. 2008; 1.5 in 2D), or
+//  - it has fewer neighbours than a set share of a full lattice neighbourhood (splash), or
+//  - 2D: one of the eight 45° sectors of its support holds no particle of any kind. This
+//    catches the waterline against a wall, where the wall particles above the surface fill
+//    part of the missing support and lift ∇·r over 1.5, without flagging material crowded
+//    against a wall (particleMesh leaves it half a spacing from the wall particles), which
+//    a colour-gradient test |∇C| h > threshold takes for a surface and so pins p = 0 inside.
+//  - 3D: |∇C| h above its threshold, confirmed by a probe at x_a + h n, n = −∇C/|∇C|, with
+//    no material within h (a simplified scan of Marrone et al. 2010).
+// Wall and dummy particles count as neighbours.
+#include <vector>
+
+#include "isph/ParticleSystem.hpp"
+
+namespace isph {
+
+class FreeSurfaceDetector {
+ public:
+  FreeSurfaceDetector(double threshold, double gradientThreshold, double minNeighbourFraction,
+                      int fullNeighbourCount, double h);
+
+  // Flags for all particles: 1 = free surface or inactive wall, 0 = interior (dummies: 0).
+  void detect(const ParticleSystem& ps);
+
+  const std::vector<char>& flags() const { return flags_; }
+  const std::vector<double>& divergence() const { return divR_; }
+  std::size_t nSurfaceMaterial() const { return nSurface_; }
+
+ private:
+  double threshold_;
+  double gradientThreshold_;
+  double h_;
+  double minNeighbours_;
+  std::vector<char> flags_;
+  std::vector<double> divR_;
+  std::size_t nSurface_ = 0;
+};
+
+// Neighbours of a particle inside a full lattice (self excluded), for the safety net.
+int fullLatticeNeighbourCount(const Kernel& kernel, double dx, const std::string& lattice, int dimension);
+
+}  // namespace isph

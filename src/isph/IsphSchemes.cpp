@@ -1,0 +1,117 @@
+#include "isph/IsphSchemes.hpp"
+
+#include <fmt/format.h>
+
+namespace isph {
+
+namespace {
+
+void requireRange(const Dictionary& d, const char* key, double value, double lo, double hi) {
+  if (value < lo || value > hi) {
+    const Entry* e = d.findEntry(key);
+    fatalIOError(e ? e->location() : d.location(),
+                 fmt::format("keyword '{}' in {}: {} is outside the valid range [{}, {}]", key, d.name(), value, lo, hi));
+  }
+}
+
+}  // namespace
+
+const char* toString(PpeSource s) {
+  switch (s) {
+    case PpeSource::densityInvariant: return "densityInvariant";
+    case PpeSource::divergence: return "divergence";
+    case PpeSource::mixed: return "mixed";
+  }
+  return "?";
+}
+
+IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
+  IsphSchemes s;
+  s.kernel = d.getOrDefault("kernel", s.kernel);
+  s.hOverDx = d.getOrDefault("hOverDx", s.hOverDx);
+  requireRange(d, "hOverDx", s.hOverDx, 0.5, 4.0);
+  s.kernelCorrection = d.getOrDefault("kernelCorrection", s.kernelCorrection);
+
+  const Dictionary lap = d.subDictOrEmpty("laplacian");
+  s.laplacianEta = lap.getOrDefault("eta", s.laplacianEta);
+  requireRange(lap, "eta", s.laplacianEta, 1e-6, 1.0);
+  s.laplacianCorrection = lap.getOrDefault("correction", s.laplacianCorrection);
+  lap.checkKeywords();
+
+  const Dictionary src = d.subDictOrEmpty("source");
+  const std::string type =
+      src.getChoiceOrDefault("type", {"densityInvariant", "divergence", "mixed"}, "densityInvariant");
+  s.source = type == "divergence" ? PpeSource::divergence
+             : type == "mixed"    ? PpeSource::mixed
+                                  : PpeSource::densityInvariant;
+  if (s.source == PpeSource::mixed) {
+    s.alpha = src.getOrDefault("alpha", s.alpha);
+    requireRange(src, "alpha", s.alpha, 0.0, 1.0);
+  }
+  src.checkKeywords({"alpha"});
+
+  const Dictionary fs = d.subDictOrEmpty("freeSurface");
+  s.freeSurfaceThreshold = fs.getOrDefault("threshold", dimension == 2 ? 1.5 : 2.75);
+  requireRange(fs, "threshold", s.freeSurfaceThreshold, 0.0, double(dimension));
+  s.freeSurfaceGradient = fs.getOrDefault("gradientThreshold", s.freeSurfaceGradient);
+  requireRange(fs, "gradientThreshold", s.freeSurfaceGradient, 0.0, 10.0);
+  s.minNeighbourFraction = fs.getOrDefault("minNeighbourFraction", s.minNeighbourFraction);
+  requireRange(fs, "minNeighbourFraction", s.minNeighbourFraction, 0.0, 1.0);
+  fs.checkKeywords();
+
+  s.tensionCutoff = d.getOrDefault("tensionCutoff", s.tensionCutoff);
+
+  const Dictionary sh = d.subDictOrEmpty("shifting");
+  s.shifting = sh.getOrDefault("enabled", s.shifting);
+  if (s.shifting) {
+    s.shiftingCoefficient = sh.getOrDefault("coefficient", s.shiftingCoefficient);
+    requireRange(sh, "coefficient", s.shiftingCoefficient, 0.0, 20.0);
+    s.maxShift = sh.getOrDefault("maxShift", s.maxShift);
+    requireRange(sh, "maxShift", s.maxShift, 0.0, 1.0);
+  }
+  sh.checkKeywords({"coefficient", "maxShift"});
+
+  const Dictionary ts = d.subDictOrEmpty("timeStep");
+  s.forceFactor = ts.getOrDefault("forceFactor", s.forceFactor);
+  requireRange(ts, "forceFactor", s.forceFactor, 1e-6, 10.0);
+  s.viscousFactor = ts.getOrDefault("viscousFactor", s.viscousFactor);
+  requireRange(ts, "viscousFactor", s.viscousFactor, 1e-6, 10.0);
+  s.maxGrowth = ts.getOrDefault("maxGrowth", s.maxGrowth);
+  requireRange(ts, "maxGrowth", s.maxGrowth, 1.0, 10.0);
+  ts.checkKeywords();
+
+  const Dictionary ws = d.subDictOrEmpty("wallSafeguard");
+  s.wallSafeguardDistance = ws.getOrDefault("distance", s.wallSafeguardDistance);
+  requireRange(ws, "distance", s.wallSafeguardDistance, 0.0, 1.0);
+  ws.checkKeywords();
+
+  d.checkKeywords();
+  return s;
+}
+
+std::string IsphSchemes::describe() const {
+  std::string out;
+  out += fmt::format("    kernel {} with h = {} dx, gradient correction {}\n", kernel, hOverDx,
+                     kernelCorrection ? "on" : "off");
+  out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,
+                     laplacianCorrection ? ", first-order correction where the support is cut" : "",
+                     toString(source));
+  if (source == PpeSource::mixed) out += fmt::format(" (alpha {})", alpha);
+  out += "\n";
+  out += fmt::format("    free surface: div r < {}, or |grad C| h > {}, or fewer than {:.0f}% of a full "
+                     "neighbourhood\n",
+                     freeSurfaceThreshold, freeSurfaceGradient, 100 * minNeighbourFraction);
+  out += fmt::format("    tension cut-off: {}\n", tensionCutoff ? "on, p >= 0 after the PPE solve" : "off");
+  if (shifting) {
+    out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx, normal part removed "
+                       "at the free surface\n",
+                       shiftingCoefficient, maxShift);
+  } else {
+    out += "    particle shifting: off\n";
+  }
+  out += fmt::format("    time step: force factor {}, viscous factor {}, growth <= {}x per step\n", forceFactor,
+                     viscousFactor, maxGrowth);
+  return out;
+}
+
+}  // namespace isph

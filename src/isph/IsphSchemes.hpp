@@ -1,0 +1,59 @@
+#pragma once
+// How the equations are discretised: system/isphSchemes. Every keyword has a default that
+// is echoed in the log; unknown keywords get a "did you mean" warning.
+//
+//   kernel           WendlandC2;     // | cubicSpline
+//   hOverDx          1.3;
+//   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
+//   laplacian        { eta 0.1; correction on; }  // Shao & Lo Laplacian (Eq. 10), η = eta·h;
+//                    correction: consistent for linear fields where the support is cut
+//   source           { type densityInvariant; alpha 0.05; }  // | divergence | mixed
+//   freeSurface      { threshold 1.5; gradientThreshold 0.05; minNeighbourFraction 0.5; }
+//   tensionCutoff    on;             // p ← max(p, 0) after the solve (no tension)
+//   shifting         { enabled on; coefficient 2; maxShift 0.2; }   // Lind et al. (2012)
+//   timeStep         { forceFactor 0.25; viscousFactor 0.125; maxGrowth 1.1; }
+//   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
+#include <string>
+
+#include "core/dictionary/Dictionary.hpp"
+
+namespace isph {
+
+enum class PpeSource { densityInvariant, divergence, mixed };
+
+struct IsphSchemes {
+  std::string kernel = "WendlandC2";
+  double hOverDx = 1.3;
+  bool kernelCorrection = true;
+  double correctionMinDeterminant = 0.25;  // fall back to the raw gradient below this
+
+  double laplacianEta = 0.1;  // η/h in r² + η²
+  bool laplacianCorrection = true;  // first-order consistent Laplacian where the support is cut
+
+  PpeSource source = PpeSource::densityInvariant;
+  double alpha = 0.05;  // weight of the density term in the mixed source
+
+  double freeSurfaceThreshold = 1.5;         // ∇·r below this flags the free surface
+  double freeSurfaceGradient = 0.05;         // |∇C| h above this makes a candidate for the scan
+  double minNeighbourFraction = 0.5;         // fewer neighbours than this share of a full lattice: surface
+
+  bool tensionCutoff = true;  // p ← max(p, 0) after the PPE solve
+
+  bool shifting = true;
+  double shiftingCoefficient = 2.0;  // A in D = A h |u| dt
+  double maxShift = 0.2;             // in dx
+
+  double forceFactor = 0.25;     // dt ≤ C_f √(h/|f|)
+  double viscousFactor = 0.125;  // dt ≤ C_ν ρ h²/η
+  double maxGrowth = 1.1;        // dt may grow by at most this factor per step
+
+  double wallSafeguardDistance = 0.5;  // in dx
+
+  static IsphSchemes read(const Dictionary& dict, int dimension);
+  // One line per setting for the start of the log.
+  std::string describe() const;
+};
+
+const char* toString(PpeSource s);
+
+}  // namespace isph

@@ -1,0 +1,204 @@
+#include "isph/IsphSolver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Log.hpp"
+#include "core/fields/FieldIO.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "isph/Gravity.hpp"
+#include "isph/IntermediateVelocity.hpp"
+#include "isph/ParticleShifting.hpp"
+#include "isph/VelocityCorrection.hpp"
+#include "isph/WallPenetrationGuard.hpp"
+#include "particles/CloudIO.hpp"
+
+namespace isph {
+
+namespace {
+
+constexpr long reorderInterval = 50;  // steps between cell reorderings of the material particles
+
+Dictionary readOptional(const std::filesystem::path& file, const std::string& name) {
+  if (std::filesystem::exists(file)) return Dictionary::readFile(file);
+  info("    {} not found: using the defaults", name);
+  return Dictionary(file.string());
+}
+
+std::string findCloud(const std::filesystem::path& timeDir) {
+  const auto dir = timeDir / "lagrangian";
+  std::vector<std::string> clouds;
+  if (std::filesystem::is_directory(dir)) {
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      if (e.is_directory() && e.path().filename().string()[0] != '.') clouds.push_back(e.path().filename().string());
+    }
+  }
+  std::sort(clouds.begin(), clouds.end());
+  if (clouds.size() != 1) {
+    fatalError(fmt::format("expected one particle cloud in {}, found {}{}\n    (run particleMesh to create the "
+                           "initial particles)",
+                           dir.string(), clouds.size(), clouds.empty() ? "" : ": " + fmt::format("{}", fmt::join(clouds, ", "))));
+  }
+  return clouds[0];
+}
+
+}  // namespace
+
+IsphSolver::IsphSolver(const Time& time) {
+  const auto& caseDir = time.path();
+  const std::string cloudName = findCloud(time.timePath());
+  info("Reading cloud '{}' from {}", cloudName, time.timeName());
+  ps_.cloud = readCloud(time.timePath(), cloudName);
+  const int dim = ps_.cloud.properties.dimension;
+
+  info("\nReading system/isphSchemes");
+  schemes_ = IsphSchemes::read(readOptional(caseDir / "system" / "isphSchemes", "system/isphSchemes"), dim);
+  materials_ = std::make_unique<MaterialTable>(caseDir / "constant" / "materialProperties",
+                                               ps_.cloud.properties.materials);
+  g_ = readGravity(caseDir);
+  kernel_ = makeKernel(schemes_.kernel, schemes_.hOverDx * ps_.cloud.properties.spacing, dim);
+  initialiseParticleSystem(ps_, *materials_, *kernel_);
+
+  info("\nReading system/isphSolution");
+  const Dictionary solution = readOptional(caseDir / "system" / "isphSolution", "system/isphSolution");
+  ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"));
+  solution.checkKeywords();
+
+  freeSurface_ = std::make_unique<FreeSurfaceDetector>(
+      schemes_.freeSurfaceThreshold, schemes_.freeSurfaceGradient, schemes_.minNeighbourFraction,
+      fullLatticeNeighbourCount(*kernel_, ps_.dx, ps_.cloud.properties.lattice, dim), kernel_->h());
+
+  // The domain: the initial particles' bounding box, enlarged each way by its largest side.
+  domainMin_ = domainMax_ = ps_.cloud.positions[0];
+  for (const auto& x : ps_.cloud.positions) {
+    domainMin_ = domainMin_.cwiseMin(x);
+    domainMax_ = domainMax_.cwiseMax(x);
+  }
+  const Vec3 margin = Vec3::Constant((domainMax_ - domainMin_).maxCoeff() + 10 * ps_.dx);
+  domainMin_ -= margin;
+  domainMax_ += margin;
+
+  info("\nActive models and schemes");
+  info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", dim, ps_.size(), ps_.nMaterial,
+       ps_.nWall, ps_.nDummy, ps_.dx, kernel_->h());
+  for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
+  for (const auto& p : ps_.cloud.properties.patches) {
+    info("    wall patch {}: no penetration (PPE wall particles + Neumann dummies){}", p.name,
+         p.frictionAngle > 0 ? fmt::format(", friction angle {} deg", p.frictionAngle) : "");
+  }
+  info("    gravity ({} {} {}) m/s^2", g_.x(), g_.y(), g_.z());
+  infoLine(schemes_.describe());
+}
+
+IsphSolver::~IsphSolver() = default;
+
+TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
+  double maxSpeed = 0;
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) maxSpeed = std::max(maxSpeed, ps_.cloud.U[a].norm());
+  double maxNu = 0;
+  for (std::size_t i = 0; i < materials_->size(); ++i) {
+    maxNu = std::max(maxNu, (*materials_)[i].maxViscosity() / (*materials_)[i].rho());
+  }
+  const double force = g_.norm() + maxViscousAcceleration_;
+  const double previous = time.timeIndex() > 0 ? time.deltaT() : 0.0;
+  return timeStepLimits(kernel_->h(), maxSpeed, time.settings().maxCo, force, schemes_.forceFactor, maxNu,
+                        schemes_.viscousFactor, previous, schemes_.maxGrowth, time.settings().maxDeltaT);
+}
+
+StepReport IsphSolver::step(const Time& time) {
+  const double dt = time.deltaT();
+  StepReport report;
+  {
+    auto t = timer_.scope("neighbour search");
+    if (stepsSinceReorder_++ % reorderInterval == 0) reorderMaterialParticles(ps_, kernel_->supportRadius());
+    ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+  }
+  {
+    auto t = timer_.scope("kernel and corrections");
+    correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
+    freeSurface_->detect(ps_);
+    report.freeSurface = freeSurface_->nSurfaceMaterial();
+    ps_.wallPullLimit.assign(ps_.size(), 0.0);
+    for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+      ps_.wallPullLimit[a] = freeSurface_->flags()[a] ? 0.0 : std::max(ps_.cloud.p[a], 0.0);
+    }
+  }
+  {
+    auto t = timer_.scope("intermediate velocity");
+    maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, g_, dt, kernel_->h(), ustar_);
+  }
+  {
+    report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
+    timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
+    timer_.add("PPE setup", report.ppe.setupSeconds);
+    timer_.add("PPE solve", report.ppe.solveSeconds);
+  }
+  if (!report.ppe.converged) {
+    fatalError(fmt::format("the pressure Poisson equation did not converge at time {}: residual {:.3g} after {} "
+                           "iterations.\n    The last written time directory is intact; try a "
+                           "smaller maxCo or maxDeltaT, or more maxIter in system/isphSolution.",
+                           time.timeName(), report.ppe.finalResidual, report.ppe.iterations));
+  }
+  {
+    auto t = timer_.scope("velocity correction and shifting");
+    std::vector<Vec3> oldU(ps_.cloud.U.begin(), ps_.cloud.U.begin() + static_cast<long>(ps_.nMaterial));
+    correctVelocity(ps_, correction_, ustar_, g_, dt);
+    for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+      ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
+    }
+    if (schemes_.shifting) {
+      report.maxShift = shiftParticles(ps_, *kernel_, correction_, freeSurface_->flags(), schemes_, dt).maxShift;
+    }
+    const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);
+    report.wallSafeguard = guard.moved;
+    report.wallCrossings = guard.crossed;
+    if (guard.crossed > 0 && totalWallCrossings_ == 0) {
+      warning(fmt::format("first wall crossing at time {}: {} ({} particle(s) this step)", time.timeName(),
+                          guard.firstCrossing, guard.crossed));
+    }
+    totalWallCrossings_ += guard.crossed;
+  }
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) report.maxSpeed = std::max(report.maxSpeed, ps_.cloud.U[a].norm());
+  report.courant = report.maxSpeed * dt / kernel_->h();
+  checkDomain(time);
+  return report;
+}
+
+void IsphSolver::checkDomain(const Time& time) const {
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+    const Vec3& x = ps_.cloud.positions[a];
+    const Vec3& u = ps_.cloud.U[a];
+    if (!x.allFinite() || !u.allFinite() || !std::isfinite(ps_.cloud.p[a])) {
+      fatalError(fmt::format("the solution diverged at time {}: particle {} (origId {}) has a non-finite position, "
+                             "velocity or pressure.\n    The last written time directory is intact; try a smaller "
+                             "maxCo or maxDeltaT.",
+                             time.timeName(), a, ps_.cloud.origId[a]));
+    }
+    if ((x.array() < domainMin_.array()).any() || (x.array() > domainMax_.array()).any()) {
+      fatalError(fmt::format("particle {} (origId {}) left the domain at time {}: position ({:.4g} {:.4g} {:.4g}), "
+                             "velocity ({:.3g} {:.3g} {:.3g}); the domain is the initial bounding box enlarged by "
+                             "its largest side, ({:.4g} {:.4g}) to ({:.4g} {:.4g}).\n    The last written time directory "
+                             "is intact.",
+                             a, ps_.cloud.origId[a], time.timeName(), x.x(), x.y(), x.z(), u.x(), u.y(), u.z(),
+                             domainMin_.x(), domainMin_.y(), domainMax_.x(), domainMax_.y()));
+    }
+  }
+}
+
+void IsphSolver::write(Time& time) {
+  auto t = timer_.scope("output");
+  StagedDirectory dir(time.timePath());
+  FieldWriteOptions options{time.settings().writeFormat, time.settings().writePrecision, ""};
+  writeCloud(dir.path(), time.timeName(), ps_.cloud, options);
+  std::vector<label> flags(freeSurface_->flags().begin(), freeSurface_->flags().end());
+  flags.resize(ps_.size(), 0);
+  options.location = fmt::format("{}/lagrangian/{}", time.timeName(), ps_.cloud.name);
+  writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", flags, options);
+  time.writeTimeState(dir.path());
+  dir.commit();
+  time.purgeOldWrites();
+}
+
+}  // namespace isph

@@ -1,0 +1,70 @@
+#pragma once
+// One ISPH projection step (Chorin; the paper's Eqs. 6-11), as a short list of named
+// stages over small single-purpose classes:
+//   neighbours → kernel correction → free surface → u* (Eq. 6) → PPE (Eqs. 8/10) →
+//   velocity correction (Eq. 11) → move → shift → wall safeguard
+// The solver owns the particles; the application's main owns the time loop.
+#include <filesystem>
+#include <memory>
+
+#include "core/PhaseTimer.hpp"
+#include "core/time/Time.hpp"
+#include "isph/FreeSurfaceDetector.hpp"
+#include "isph/IsphSchemes.hpp"
+#include "isph/KernelGradientCorrection.hpp"
+#include "isph/ParticleSystem.hpp"
+#include "isph/PressurePoissonEquation.hpp"
+#include "isph/TimeStepControl.hpp"
+
+namespace isph {
+
+struct StepReport {
+  SolverPerformance ppe;
+  std::size_t freeSurface = 0;
+  std::size_t wallSafeguard = 0;
+  std::size_t wallCrossings = 0;  // this step
+  double maxShift = 0;  // in dx
+  double maxSpeed = 0;
+  double courant = 0;
+};
+
+class IsphSolver {
+ public:
+  // Reads the cloud of the start time, constant/materialProperties, constant/g,
+  // system/isphSchemes and system/isphSolution; logs the active models and schemes.
+  explicit IsphSolver(const Time& time);
+  ~IsphSolver();
+
+  // The time step for the next step (adjustTimeStep), with the limit that set it.
+  TimeStepLimits nextDeltaT(const Time& time) const;
+  // Advance the particles by time.deltaT() (call after ++time).
+  StepReport step(const Time& time);
+  // Write the cloud into the current time directory (atomically) and the time state.
+  void write(Time& time);
+
+  const ParticleSystem& particles() const { return ps_; }
+  const PhaseTimer& timer() const { return timer_; }
+  // Material particles found behind a wall surface since the start of the run.
+  std::size_t wallCrossings() const { return totalWallCrossings_; }
+  const Vec3& gravity() const { return g_; }
+
+ private:
+  void checkDomain(const Time& time) const;
+
+  std::size_t totalWallCrossings_ = 0;
+  IsphSchemes schemes_;
+  std::unique_ptr<MaterialTable> materials_;
+  std::unique_ptr<Kernel> kernel_;
+  ParticleSystem ps_;
+  Vec3 g_ = Vec3::Zero();
+  KernelGradientCorrection correction_;
+  std::unique_ptr<FreeSurfaceDetector> freeSurface_;
+  std::unique_ptr<PressurePoissonEquation> ppe_;
+  std::vector<Vec3> ustar_;
+  Vec3 domainMin_, domainMax_;
+  double maxViscousAcceleration_ = 0;
+  long stepsSinceReorder_ = 0;
+  PhaseTimer timer_;
+};
+
+}  // namespace isph

@@ -1,0 +1,92 @@
+#include "isph/ParticleShifting.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isph {
+
+ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
+                              const std::vector<char>& freeSurface, const IsphSchemes& schemes, double dt) {
+  auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const long n = static_cast<long>(ps.nMaterial);
+  const double Wdx = kernel.W(ps.dx);
+  const double maxShift = schemes.maxShift * ps.dx;
+  std::vector<Vec3> shift(ps.nMaterial, Vec3::Zero());
+  double largest = 0;
+  long capped = 0;
+#pragma omp parallel for schedule(static) reduction(max : largest) reduction(+ : capped)
+  for (long a = 0; a < n; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    const double speed = c.U[ua].norm();
+    // Free-surface particles are not shifted: at the tip of a front the tangent of the
+    // surface runs along the flow, and shifting there drives a jet ahead of the front
+    // (the dam break's front speed was 23% high with it, 0.4% low without).
+    if (speed == 0 || freeSurface[ua]) continue;
+    Vec3 gradC = Vec3::Zero();
+    bool nearSurface = freeSurface[ua];
+    double nearestWall2 = 1e300;
+    std::size_t wall = 0;
+    for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const double ratio = nl.W[kk] / Wdx;
+      gradC += ps.volume[b] * (1.0 + 0.2 * ratio * ratio * ratio * ratio) * nl.F[kk] * (c.positions[ua] - c.positions[b]);
+      nearSurface = nearSurface || (ps.isMaterial(b) && freeSurface[b]);
+      if (ps.isWall(b) && (c.positions[ua] - c.positions[b]).squaredNorm() < nearestWall2) {
+        nearestWall2 = (c.positions[ua] - c.positions[b]).squaredNorm();
+        wall = b;
+      }
+    }
+    const double D = schemes.shiftingCoefficient * kernel.h() * speed * dt;
+    Vec3 dr = -D * gradC;
+    if (nearSurface && gradC.squaredNorm() > 0) {
+      const Vec3 normal = -gradC.normalized();
+      dr -= dr.dot(normal) * normal;
+    }
+    // Next to a wall, only along it: the wall particles sit half a spacing from the first
+    // material row (particleMesh), so ∇C there points into the wall, and shifting along it
+    // would lift the flow off the bed a little every step.
+    if (nearestWall2 < 1e300) {
+      const Vec3& n = c.normal[wall];
+      dr -= dr.dot(n) * n;
+    }
+    const double len = dr.norm();
+    if (len > maxShift) {
+      dr *= maxShift / len;
+      ++capped;
+    }
+    shift[ua] = dr;
+    largest = std::max(largest, std::min(len, maxShift) / ps.dx);
+  }
+
+  // Taylor correction of u and p with the renormalised gradient, then move.
+  std::vector<Vec3> Unew(c.U.begin(), c.U.begin() + n);
+  std::vector<double> pnew(c.p.begin(), c.p.begin() + n);
+#pragma omp parallel for schedule(static)
+  for (long a = 0; a < n; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    if (shift[ua].squaredNorm() == 0) continue;
+    Eigen::Matrix3d gradU = Eigen::Matrix3d::Zero();  // (∇u)_ij = ∂u_i/∂x_j
+    Vec3 gradP = Vec3::Zero();
+    for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const Vec3 gw = L[ua] * (nl.F[kk] * (c.positions[ua] - c.positions[b]));
+      const Vec3 ub = ps.isMaterial(b) ? c.U[b] : Vec3::Zero();
+      gradU.noalias() += ps.volume[b] * (ub - c.U[ua]) * gw.transpose();
+      gradP += ps.volume[b] * (c.p[b] - c.p[ua]) * gw;
+    }
+    Unew[ua] += gradU * shift[ua];
+    pnew[ua] += gradP.dot(shift[ua]);
+  }
+  for (long a = 0; a < n; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    c.positions[ua] += shift[ua];
+    c.U[ua] = Unew[ua];
+    c.p[ua] = pnew[ua];
+  }
+  return {largest, static_cast<std::size_t>(capped)};
+}
+
+}  // namespace isph

@@ -1,0 +1,47 @@
+#pragma once
+// The particles as the solver sees them: the cloud (ordered material | wall | dummy), the
+// per-particle density and volume that the SPH sums use, the dummy-to-wall association,
+// and the neighbour list of the current step.
+#include <vector>
+
+#include "core/Types.hpp"
+#include "isph/materials/MaterialTable.hpp"
+#include "particles/ParticleCloud.hpp"
+#include "sph/kernels/Kernel.hpp"
+#include "sph/neighbours/NeighbourList.hpp"
+
+namespace isph {
+
+struct ParticleSystem {
+  ParticleCloud cloud;
+  int dimension = 2;
+  double dx = 0;
+  std::size_t nMaterial = 0;  // particles [0, nMaterial) are material
+  std::size_t nWall = 0;      // [nMaterial, nMaterial + nWall) are wall particles
+  std::size_t nDummy = 0;     // the rest are dummy particles
+
+  std::vector<double> rho;     // material: its density; wall and dummy: the wall reference density
+  std::vector<double> volume;  // m/ρ (material), the area of a wall site (walls)
+  std::vector<int> parentWall; // dummy particle -> the wall particle it extends (-1 for others)
+  double wallRho = 0;          // the wall reference density (mass-weighted mean of the materials)
+  std::vector<double> wallPullLimit;  // the most suction a wall may exert (WallBoundaryPressure)
+  double latticeSum = 1;       // Σ_b V_b W_ab of a full lattice (self included): θ = 1 at rest
+
+  NeighbourList neighbours;
+
+  std::size_t size() const { return cloud.size(); }
+  bool isMaterial(std::size_t a) const { return a < nMaterial; }
+  bool isWall(std::size_t a) const { return a >= nMaterial && a < nMaterial + nWall; }
+  bool isDummy(std::size_t a) const { return a >= nMaterial + nWall; }
+  std::size_t wallBegin() const { return nMaterial; }
+  std::size_t dummyBegin() const { return nMaterial + nWall; }
+};
+
+// Orders the cloud material | wall | dummy, sets densities, volumes, the lattice sum and the
+// dummy-to-wall association. FatalError if the cloud has no material particles.
+void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials, const Kernel& kernel);
+
+// Reorders the material particles by cell so that neighbours sit close in memory.
+void reorderMaterialParticles(ParticleSystem& ps, double cellSize);
+
+}  // namespace isph

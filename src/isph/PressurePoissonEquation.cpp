@@ -1,0 +1,216 @@
+#include "isph/PressurePoissonEquation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/Log.hpp"
+#include "isph/WallBoundaryPressure.hpp"
+
+namespace isph {
+
+PressurePoissonEquation::PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver)
+    : schemes_(schemes), solver_(std::move(solver)) {}
+
+namespace {
+
+// Marks one particle of every connected group of unknowns that touches no Dirichlet
+// particle (a closed, completely filled container): without it the system is singular.
+// Returns the number of pinned particles.
+int pinClosedRegions(const ParticleSystem& ps, const std::vector<char>& touchesDirichlet, std::vector<char>& flags,
+                     const std::vector<int>& rowOf) {
+  const std::size_t n = ps.nMaterial;
+  std::vector<char> seen(n, 0);
+  std::vector<std::size_t> stack;
+  int pinned = 0;
+  for (std::size_t s = 0; s < n; ++s) {
+    if (seen[s] || rowOf[s] < 0) continue;
+    bool anchored = false;
+    stack.assign(1, s);
+    seen[s] = 1;
+    while (!stack.empty()) {
+      const std::size_t a = stack.back();
+      stack.pop_back();
+      anchored = anchored || touchesDirichlet[a];
+      for (long k = ps.neighbours.start[a]; k < ps.neighbours.start[a + 1]; ++k) {
+        const auto b = static_cast<std::size_t>(ps.neighbours.index[static_cast<std::size_t>(k)]);
+        if (b < n && !seen[b] && rowOf[b] >= 0) {
+          seen[b] = 1;
+          stack.push_back(b);
+        }
+      }
+    }
+    if (!anchored) {
+      flags[s] = 1;
+      ++pinned;
+    }
+  }
+  return pinned;
+}
+
+}  // namespace
+
+void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& kernel,
+                                       const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                                       const std::vector<char>& freeSurfaceIn, const Vec3& g, double dt) {
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const std::size_t nMat = ps.nMaterial;
+  std::vector<char> flags(freeSurfaceIn.begin(), freeSurfaceIn.begin() + static_cast<long>(nMat));
+
+  for (int pass = 0; pass < 2; ++pass) {
+    rowOf_.assign(ps.size(), -1);
+    particleOf_.clear();
+    for (std::size_t a = 0; a < nMat; ++a) {
+      if (!flags[a]) {
+        rowOf_[a] = static_cast<int>(particleOf_.size());
+        particleOf_.push_back(static_cast<int>(a));
+      }
+    }
+    if (pass == 1) break;
+    std::vector<char> touchesDirichlet(nMat, 0);
+    for (std::size_t a = 0; a < nMat; ++a) {
+      if (rowOf_[a] < 0) continue;
+      for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+        const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+        if (b < nMat && flags[b]) {
+          touchesDirichlet[a] = 1;
+          break;
+        }
+      }
+    }
+    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, rowOf_);
+    if (pinned == 0) break;
+    info("    PPE: {} closed region(s) without a free surface: pressure pinned to 0 at one particle each", pinned);
+  }
+
+  const long nRows = static_cast<long>(particleOf_.size());
+  system_.firstRow = 0;
+  system_.rowStart.assign(static_cast<std::size_t>(nRows) + 1, 0);
+  for (long r = 0; r < nRows; ++r) {
+    const auto a = static_cast<std::size_t>(particleOf_[static_cast<std::size_t>(r)]);
+    int count = 1;
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      count += rowOf_[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] >= 0;
+    }
+    system_.rowStart[static_cast<std::size_t>(r) + 1] = system_.rowStart[static_cast<std::size_t>(r)] + count;
+  }
+  const auto nnz = static_cast<std::size_t>(system_.rowStart.back());
+  system_.columns.resize(nnz);
+  system_.values.resize(nnz);
+  system_.rhs.resize(static_cast<std::size_t>(nRows));
+
+  const double h = kernel.h();
+  const double eta2 = schemes_.laplacianEta * schemes_.laplacianEta * h * h;
+  const double W0 = kernel.W(0.0);
+  const double theta0 = ps.latticeSum;
+  const PpeSource type = schemes_.source;
+  const bool consistent = schemes_.laplacianCorrection;
+  system_.symmetricHint = !consistent;
+
+#pragma omp parallel for schedule(static)
+  for (long r = 0; r < nRows; ++r) {
+    const auto a = static_cast<std::size_t>(particleOf_[static_cast<std::size_t>(r)]);
+    const Vec3& xa = c.positions[a];
+    const Vec3 dxa = dt * ustar[a];
+    const double ma = ps.rho[a] * ps.volume[a];
+    auto pos = static_cast<std::size_t>(system_.rowStart[static_cast<std::size_t>(r)]);
+    const std::size_t diag = pos++;
+    double diagonal = 0, rhsWall = 0;
+    double thetaN = ps.volume[a] * W0, thetaStar = thetaN, divergence = 0;
+    bool nearBoundary = false;
+    // First-order correction (consistent Laplacian): d_a = Σ_b 2 V_b F_ab r²/(r²+η²) x_ab
+    // vanishes in a full support; where the support is cut, the row gains −(m_a/ρ_a) d_a·∇p_a
+    // with the renormalised gradient, so a linear pressure field has a zero Laplacian.
+    Vec3 Ld = Vec3::Zero();
+    if (consistent) {
+      Vec3 d = Vec3::Zero();
+      for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        const Vec3 xab = xa - c.positions[static_cast<std::size_t>(nl.index[kk])];
+        const double r2 = xab.squaredNorm();
+        d += 2.0 * ps.volume[static_cast<std::size_t>(nl.index[kk])] * nl.F[kk] * r2 / (r2 + eta2) * xab;
+      }
+      Ld = L[a].transpose() * d * (ma / ps.rho[a]);
+      // Keep the M-matrix sign pattern: where the correction would turn a coupling positive
+      // (a badly cut support: the tip of a front, a splash), the row stays uncorrected.
+      for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        const auto b = static_cast<std::size_t>(nl.index[kk]);
+        const Vec3 xab = xa - c.positions[b];
+        const double r2 = xab.squaredNorm();
+        const double rhoSum = ps.rho[a] + ps.rho[b];
+        const double C0 = ma * ps.rho[b] * ps.volume[b] * 8.0 / (rhoSum * rhoSum) * nl.F[kk] * r2 / (r2 + eta2);
+        if (C0 + ps.volume[b] * nl.F[kk] * Ld.dot(xab) > 0) {
+          Ld.setZero();
+          break;
+        }
+      }
+    }
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const Vec3 xab = xa - c.positions[b];
+      const double r2 = xab.squaredNorm();
+      const double mb = ps.rho[b] * ps.volume[b];
+      const double rhoSum = ps.rho[a] + ps.rho[b];
+      const double C = ma * mb * 8.0 / (rhoSum * rhoSum) * nl.F[kk] * r2 / (r2 + eta2)  // ≤ 0, Eq. 10
+                       + ps.volume[b] * nl.F[kk] * Ld.dot(xab);                     // correction
+      thetaN += ps.volume[b] * nl.W[kk];
+      if (ps.isMaterial(b)) {
+        diagonal -= C;
+        const int rb = rowOf_[b];
+        if (rb >= 0) {
+          system_.columns[pos] = rb;
+          system_.values[pos] = C;
+          ++pos;
+        }
+        nearBoundary = nearBoundary || freeSurfaceIn[b];
+        thetaStar += ps.volume[b] * kernel.W((xab + dxa - dt * ustar[b]).norm());
+        divergence += ps.volume[b] * (ustar[b] - ustar[a]).dot(L[a] * (nl.F[kk] * xab));
+      } else {
+        // Wall or dummy: p_b = p_a + δ_ab (WallBoundaryPressure); C_ab (p_a − p_b) = −C_ab δ_ab.
+        rhsWall += C * wallPressureIncrement(ps, ustar, g, a, b, dt);
+        nearBoundary = true;
+        thetaStar += ps.volume[b] * nl.W[kk];  // the wall moves with a: no relative motion
+      }
+    }
+    system_.columns[diag] = static_cast<long>(r);
+    system_.values[diag] = diagonal;
+    const double thetaRef = nearBoundary ? thetaN : theta0;
+    double source = 0;
+    switch (type) {
+      case PpeSource::densityInvariant: source = (thetaRef - thetaStar) / (thetaRef * dt * dt); break;
+      case PpeSource::divergence: source = divergence / dt; break;
+      case PpeSource::mixed:
+        source = divergence / dt + schemes_.alpha * (thetaRef - thetaN) / (thetaRef * dt * dt);
+        break;
+    }
+    // A = −(Eq. 10 × m_a): A p = −m_a S_a − Σ_wall C_ab δ_ab
+    system_.rhs[static_cast<std::size_t>(r)] = -ma * source - rhsWall;
+  }
+}
+
+SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kernel& kernel,
+                                                 const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                                                 const std::vector<char>& freeSurface, const Vec3& g, double dt) {
+  const auto start = std::chrono::steady_clock::now();
+  assemble(ps, kernel, L, ustar, freeSurface, g, dt);
+  assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  auto& p = ps.cloud.p;
+  std::vector<double> x(particleOf_.size());
+  for (std::size_t r = 0; r < x.size(); ++r) x[r] = p[static_cast<std::size_t>(particleOf_[r])];  // warm start
+  SolverPerformance perf = solver_->solve(system_, x);
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    p[a] = rowOf_[a] >= 0 ? x[static_cast<std::size_t>(rowOf_[a])] : 0.0;
+    // Neither soil nor a breaking water front carries tension; SPH suction at a stretching
+    // front is also what launches the tensile instability.
+    if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
+  }
+  updateWallPressure(ps, ustar, g, dt);
+  return perf;
+}
+
+}  // namespace isph

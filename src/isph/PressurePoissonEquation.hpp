@@ -1,0 +1,58 @@
+#pragma once
+// The pressure Poisson equation (Eqs. 8 and 10), assembled as A p = b with A = −L (positive
+// diagonal, non-positive off-diagonals: the M-matrix sign pattern BoomerAMG expects):
+//
+//   Σ_b C_ab (p_a − p_b) = m_a S_a,   C_ab = m_a m_b 8/(ρ_a+ρ_b)² (x_ab·∇_a W_ab)/(r_ab²+η²)
+//
+// (Eq. 10 multiplied by m_a, which makes the matrix symmetric). With θ_a = Σ_b V_b W_ab the
+// kernel sum (θ/θ0 = ρ/ρ0) and θ_ref its full-lattice value θ0, the source S_a is
+//   densityInvariant (the paper): (θ_ref − θ*_a)/(θ_ref dt²), θ* at the intermediate positions,
+//   divergence:                   ∇·u*_a/dt (renormalised difference form),
+//   mixed:                        ∇·u*_a/dt + α (θ_ref − θⁿ_a)/(θ_ref dt²).
+// Particles whose support reaches the free surface or a wall have a kernel sum that differs
+// from θ0 without a density error: below the surface it is short (suction if compared with
+// θ0), next to a wall it depends on how the wall particles sit (particleMesh leaves the
+// material half a spacing from them: θ is 10-30% high there, and the paper's source then
+// blows the first rows off the wall in one step). For them θ_ref = θⁿ_a, so only the change
+// over the step counts; the wall acts through its Neumann condition alone.
+// Unknowns are the material particles that are not on the free surface; free-surface
+// particles hold p = 0 (Dirichlet, eliminated). Wall and dummy particles are not unknowns:
+// they carry the Neumann condition of WallBoundaryPressure, whose known increment p_b(a) − p_a
+// goes to the right-hand side; in the sums over neighbours they move with particle a.
+#include <memory>
+#include <vector>
+
+#include "isph/IsphSchemes.hpp"
+#include "isph/KernelGradientCorrection.hpp"
+#include "isph/ParticleSystem.hpp"
+#include "linearSolvers/LinearSolver.hpp"
+
+namespace isph {
+
+class PressurePoissonEquation {
+ public:
+  PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver);
+
+  // Assemble and solve; writes p into ps.cloud.p for all particles (warm start from it).
+  // `ustar` is the intermediate velocity, `freeSurface` the flags of the FreeSurfaceDetector.
+  SolverPerformance solve(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
+                          const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);
+
+  // The last assembled system (for tests and diagnostics).
+  const SparseSystem& system() const { return system_; }
+  const std::vector<int>& rowOf() const { return rowOf_; }
+  double assemblySeconds() const { return assemblySeconds_; }
+
+ private:
+  void assemble(const ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
+                const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);
+
+  IsphSchemes schemes_;
+  std::unique_ptr<LinearSolver> solver_;
+  SparseSystem system_;
+  std::vector<int> rowOf_;
+  std::vector<int> particleOf_;
+  double assemblySeconds_ = 0;
+};
+
+}  // namespace isph

@@ -1,0 +1,25 @@
+#pragma once
+// Eq. 11: the projection step u_a = u*_a − (dt/ρ_a) ∇p_a with the renormalised difference
+// gradient
+//   ∇p_a = L_a Σ_b V_b (p_b − p_a) ∇_a W_ab,
+// exact for linear pressure fields, also at the free surface (half support, p = 0 there) and
+// next to walls, where p_b is the wall condition of WallBoundaryPressure seen from a. The
+// symmetric form Σ m_b (p_a/ρ_a² + p_b/ρ_b²)∇W conserves momentum but is inconsistent where
+// the support is cut, which leaves an error of order g dt/2 on every surface particle;
+// particle shifting keeps the difference form's particle distribution regular.
+#include <vector>
+
+#include "isph/KernelGradientCorrection.hpp"
+#include "isph/ParticleSystem.hpp"
+
+namespace isph {
+
+// ∇p_a of material particle a as Eq. 11 uses it.
+Vec3 pressureGradient(const ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                      const Vec3& g, std::size_t a, double dt);
+
+// Sets ps.cloud.U of the material particles from u* and the pressure.
+void correctVelocity(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                     const Vec3& g, double dt);
+
+}  // namespace isph

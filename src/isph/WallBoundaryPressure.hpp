@@ -1,0 +1,46 @@
+#pragma once
+// The wall as the pressure sees it: a discrete Neumann condition carried by the wall and
+// dummy particles. Seen from a material particle a, a boundary particle b (wall or dummy,
+// with the outward normal n of its wall) holds the pressure extrapolated from a,
+//
+//   p_b(a) = p_a + ∇p·(x_b − x_a),  ∇p·n = ρ_a min(0, u*_a·n)/dt,  ∇p·t = ρ_a g·t,
+//
+// The normal part is the projection's wall condition ∂p/∂n = ρ u*·n/dt (u·n = 0 after
+// Eq. 11). Towards the wall it holds in full (a wall pushes). Away from it, it would pull
+// the material back with a suction that the material cannot carry where it is about to
+// separate (a front lifting off the bed, a flow leaving a wall): there the drop below p_a
+// is limited to ps.wallPullLimit[a], the particle's pressure at the end of the last step
+// (0 on the free surface). Material in contact under pressure is held (without this, a fluid
+// at rest drifts off the walls, growing by a few per cent per step); material at p = 0 is
+// free to leave.
+// At rest u* = g dt and p_b(a) = p_a + ρ g·(x_b − x_a): the hydrostatic field is exact in
+// every direction. The same p_b(a) enters the PPE row of a (Eq. 10) and the pressure
+// gradient of a (Eq. 11), so the two stay consistent.
+#include <algorithm>
+#include <vector>
+
+#include "isph/ParticleSystem.hpp"
+
+namespace isph {
+
+// The outward normal of boundary particle b (its own for wall particles, its wall's for dummies).
+inline const Vec3& wallNormal(const ParticleSystem& ps, std::size_t b) {
+  return ps.isWall(b) ? ps.cloud.normal[b] : ps.cloud.normal[static_cast<std::size_t>(ps.parentWall[b])];
+}
+
+// p_b(a) − p_a for material particle a and boundary particle b.
+inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g,
+                                    std::size_t a, std::size_t b, double dt) {
+  const Vec3& n = wallNormal(ps, b);
+  const Vec3 rba = ps.cloud.positions[b] - ps.cloud.positions[a];
+  const double rn = rba.dot(n);
+  const double normal = ps.rho[a] * ustar[a].dot(n) / dt * rn;  // rn < 0: pushes when moving in
+  return std::max(normal, -ps.wallPullLimit[a]) + ps.rho[a] * g.dot(rba - rn * n);
+}
+
+// After the solve: each wall and dummy particle takes the Shepard (kernel-weighted) mean of
+// p_b(a) over its material neighbours, or 0 where no material is near. These are the
+// pressures that are written and that the force on a wall integrates.
+void updateWallPressure(ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g, double dt);
+
+}  // namespace isph

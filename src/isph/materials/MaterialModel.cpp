@@ -1,0 +1,20 @@
+#include "isph/materials/MaterialModel.hpp"
+
+#include <fmt/format.h>
+
+namespace isph {
+
+MaterialModel::MaterialModel(std::string name, const Dictionary& dict)
+    : name_(std::move(name)), rho_(dict.get<double>("rho")) {
+  if (!(rho_ > 0)) {
+    fatalIOError(dict.findEntry("rho")->location(),
+                 fmt::format("material '{}': rho must be positive (kg/m^3), got {}", name_, rho_));
+  }
+}
+
+std::unique_ptr<MaterialModel> makeMaterialModel(const std::string& name, const Dictionary& dict) {
+  const std::string model = dict.get<std::string>("model");
+  return MaterialRegistry::create(model, "material model", dict.findEntry("model")->location(), name, dict);
+}
+
+}  // namespace isph

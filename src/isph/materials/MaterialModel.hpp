@@ -1,0 +1,42 @@
+#pragma once
+// A material's constitutive model, chosen by name in constant/materialProperties
+// (`model newtonian;`) from a registry, so that a new model never edits the solver.
+// Models give the effective (dynamic) viscosity η(p, |γ̇|) that the deviatoric stress
+// s = 2 η D uses, with |γ̇| = √(2 D:D) (equal to |∂u/∂y| in simple shear).
+#include <memory>
+#include <string>
+
+#include "core/Registry.hpp"
+#include "core/dictionary/Dictionary.hpp"
+
+namespace isph {
+
+class MaterialModel {
+ public:
+  MaterialModel(std::string name, const Dictionary& dict);
+  virtual ~MaterialModel() = default;
+
+  const std::string& name() const { return name_; }
+  double rho() const { return rho_; }
+
+  virtual std::string type() const = 0;
+  // False for an inviscid fluid: no deviatoric stress is computed at all.
+  virtual bool hasDeviatoricStress() const = 0;
+  // Effective dynamic viscosity [Pa s] at pressure p [Pa] and shear rate |γ̇| [1/s].
+  virtual double viscosity(double p, double shearRate) const = 0;
+  // Upper bound of viscosity() (for the explicit viscous time-step limit).
+  virtual double maxViscosity() const = 0;
+  // One line for the log.
+  virtual std::string describe() const = 0;
+
+ protected:
+  std::string name_;
+  double rho_;
+};
+
+using MaterialRegistry = Registry<MaterialModel, const std::string&, const Dictionary&>;
+
+// The model named by `model` in `dict` (FatalError naming the file and line otherwise).
+std::unique_ptr<MaterialModel> makeMaterialModel(const std::string& name, const Dictionary& dict);
+
+}  // namespace isph

@@ -1,0 +1,65 @@
+#pragma once
+// Runs a copy of a tutorial case in a temporary folder, with dictionary edits, for the
+// solver's validation tests.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace isph::test {
+
+class CaseRunner {
+ public:
+  CaseRunner(const std::string& tutorial, const std::string& name)
+      : dir_(std::filesystem::temp_directory_path() / ("isphTest-" + name)) {
+    std::filesystem::remove_all(dir_);
+    std::filesystem::copy(std::string(ISPH_TUTORIALS) + "/" + tutorial, dir_, std::filesystem::copy_options::recursive);
+  }
+  ~CaseRunner() {
+    std::error_code ec;
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir_, ec);
+  }
+
+  // Replaces the value of `keyword` (a whole "keyword value;" line) in a case file.
+  void set(const std::string& file, const std::string& keyword, const std::string& value) {
+    std::ifstream in(dir_ / file);
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::regex line("(^|\n)(" + keyword + ")[ \t]+[^;\n]*;");
+    const std::string edited = std::regex_replace(text.str(), line, "$1$2 " + value + ";");
+    ASSERT_NE(edited, text.str()) << keyword << " not found in " << file;
+    std::ofstream(dir_ / file) << edited;
+  }
+
+  // Runs an application in the case; returns its exit code (its log is log.<name>).
+  int run(const std::string& exe, const std::string& name) const {
+    const std::string cmd = "'" + exe + "' -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
+    const int rc = std::system(cmd.c_str());
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  }
+
+  // The rest of the last line of log.<name> that starts with `prefix` (trimmed); "" if none.
+  std::string logValue(const std::string& name, const std::string& prefix) const {
+    std::ifstream in(dir_ / ("log." + name));
+    std::string line, value;
+    while (std::getline(in, line)) {
+      const auto at = line.find(prefix);
+      if (at == std::string::npos) continue;
+      value = line.substr(at + prefix.size());
+      value.erase(0, value.find_first_not_of(" \t"));
+      value.erase(value.find_last_not_of(" \t") + 1);
+    }
+    return value;
+  }
+
+  const std::filesystem::path& path() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+}  // namespace isph::test
