@@ -17,7 +17,14 @@ class CaseRunner {
   CaseRunner(const std::string& tutorial, const std::string& name)
       : dir_(std::filesystem::temp_directory_path() / ("isphTest-" + name)) {
     std::filesystem::remove_all(dir_);
-    std::filesystem::copy(std::string(ISPH_TUTORIALS) + "/" + tutorial, dir_, std::filesystem::copy_options::recursive);
+    std::filesystem::create_directories(dir_);
+    // The case's dictionaries and data only: not the results of a run of the tutorial itself.
+    for (const auto& e : std::filesystem::directory_iterator(std::string(ISPH_TUTORIALS) + "/" + tutorial)) {
+      const std::string name = e.path().filename().string();
+      if (name == "system" || name == "constant" || name == "validation") {
+        std::filesystem::copy(e.path(), dir_ / name, std::filesystem::copy_options::recursive);
+      }
+    }
   }
   ~CaseRunner() {
     std::error_code ec;
@@ -36,8 +43,8 @@ class CaseRunner {
   }
 
   // Runs an application in the case; returns its exit code (its log is log.<name>).
-  int run(const std::string& exe, const std::string& name) const {
-    const std::string cmd = "'" + exe + "' -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
+  int run(const std::string& exe, const std::string& name, const std::string& options = "") const {
+    const std::string cmd = "'" + exe + "' " + options + " -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
     const int rc = std::system(cmd.c_str());
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
   }

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "CaseRunner.hpp"
 #include "particles/CloudIO.hpp"
@@ -59,5 +62,36 @@ TEST(HydrostaticTank, StaysAtRestWithTheHydrostaticPressureForTwoSeconds) {
   EXPECT_LT(maxDev - minDev, 0.01) << "spread of (p - rho g depth)/(rho g H) in the interior";
   EXPECT_LT(maxSpeed, 1e-3 * std::sqrt(g * H)) << "peak speed against 1e-3 sqrt(g H)";
 }
+
+// The force on each vertical wall from the solver's wall pressures, sampled by sampleForces:
+// ρ g H²/2 per metre within 2%, at 40 and 80 particles over the depth. (p = 0 is held on the
+// surface particles, half a spacing below the top: the force is low by about dx/H.)
+class HydrostaticWallForce : public ::testing::TestWithParam<double> {};
+
+TEST_P(HydrostaticWallForce, IsRhoGHSquaredOverTwo) {
+  const double dx = GetParam(), rho = 1000, g = 9.81, H = 0.4;
+  CaseRunner c("hydrostaticTank", "hydrostaticWallForce");
+  c.set("system/particleMeshDict", "spacing", std::to_string(dx));
+  c.set("system/controlDict", "endTime", "0.1");
+  c.set("system/controlDict", "writeInterval", "0.1");
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
+  ASSERT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << c.path() / "log.isphLandslideFoam";
+  ASSERT_EQ(c.run(SAMPLEFORCES_EXE, "sampleForces", "-latestTime"), 0);
+  for (const char* wall : {"left", "right"}) {
+    std::ifstream in(c.path() / "postProcessing/sampleForces/0.1" / (std::string(wall) + ".dat"));
+    std::string line, last;
+    while (std::getline(in, line)) {
+      if (!line.empty() && line[0] != '#') last = line;
+    }
+    std::istringstream row(last);
+    double t = 0, fx = 0, fy = 0, fn = 0;
+    row >> t >> fx >> fy >> fn;
+    const double exact = 0.5 * rho * g * H * H;
+    std::printf("dx %g, %s wall: %.2f N/m, exact %.2f (%+.2f%%)\n", dx, wall, fn, exact, 100 * (fn / exact - 1));
+    EXPECT_NEAR(fn / exact, 1.0, 0.02) << wall << " wall force against rho g H^2/2";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FortyAndEightyOverTheDepth, HydrostaticWallForce, ::testing::Values(0.01, 0.005));
 
 }  // namespace
