@@ -4,11 +4,12 @@
 
 namespace isph {
 
-double IntermediateVelocity::compute(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& g,
-                                     double dt, double h, std::vector<Vec3>& ustar) {
+double IntermediateVelocity::compute(const ParticleSystem& ps, const MaterialTable& materials,
+                                     const std::vector<double>& eta, const Vec3& g, double dt, double h,
+                                     std::vector<Vec3>& ustar) {
   const auto& c = ps.cloud;
   ustar.assign(ps.size(), Vec3::Zero());
-  const bool viscous = materials.anyDeviatoricStress();
+  const bool viscous = !eta.empty();
   const auto& nl = ps.neighbours;
   const double eta2 = 0.01 * h * h;
   const long n = static_cast<long>(ps.nMaterial);
@@ -18,16 +19,18 @@ double IntermediateVelocity::compute(const ParticleSystem& ps, const MaterialTab
     const auto ua = static_cast<std::size_t>(a);
     Vec3 accel = Vec3::Zero();
     if (viscous) {
-      const double etaA = materials[static_cast<std::size_t>(c.material[ua])].viscosity(c.p[ua], 0.0);
+      const bool withWalls =
+          materials[static_cast<std::size_t>(c.material[ua])].wallContact() == WallContact::noSlip;
       for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
         const auto kk = static_cast<std::size_t>(k);
         const auto b = static_cast<std::size_t>(nl.index[kk]);
-        const double etaB =
-            ps.isMaterial(b) ? materials[static_cast<std::size_t>(c.material[b])].viscosity(c.p[b], 0.0) : etaA;
-        const Vec3 ub = ps.isMaterial(b) ? c.U[b] : Vec3::Zero();
+        const bool material = ps.isMaterial(b);
+        if (!material && !withWalls) continue;
+        const double etaB = material ? eta[b] : eta[ua];
+        const Vec3 ub = material ? c.U[b] : Vec3::Zero();
         const double r2 = (c.positions[ua] - c.positions[b]).squaredNorm();
         const double mb = ps.rho[b] * ps.volume[b];
-        accel += mb * (etaA + etaB) / (ps.rho[ua] * ps.rho[b]) * nl.F[kk] * r2 / (r2 + eta2) * (c.U[ua] - ub);
+        accel += mb * (eta[ua] + etaB) / (ps.rho[ua] * ps.rho[b]) * nl.F[kk] * r2 / (r2 + eta2) * (c.U[ua] - ub);
       }
       maxAccel = std::max(maxAccel, accel.norm());
     }

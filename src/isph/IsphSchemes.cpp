@@ -85,6 +85,16 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   requireRange(ws, "distance", s.wallSafeguardDistance, 0.0, 1.0);
   ws.checkKeywords();
 
+  s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, "implicit") == "explicit"
+                      ? ViscousTerm::explicit_
+                      : ViscousTerm::implicit;
+  const Dictionary wf = d.subDictOrEmpty("wallFriction");
+  if (wf.found("slipSpeed")) {
+    s.frictionSlipSpeed = wf.get<double>("slipSpeed");
+    requireRange(wf, "slipSpeed", s.frictionSlipSpeed, 1e-12, 1.0);
+  }
+  wf.checkKeywords();
+
   d.checkKeywords();
   return s;
 }
@@ -111,6 +121,10 @@ std::string IsphSchemes::describe() const {
   }
   out += fmt::format("    time step: force factor {}, viscous factor {}, growth <= {}x per step\n", forceFactor,
                      viscousFactor, maxGrowth);
+  out += fmt::format("    deviatoric term (where a material has one): {}\n",
+                     viscousTerm == ViscousTerm::implicit
+                         ? "semi-implicit (Morris operator, one PCG solve per component; no viscous time-step limit)"
+                         : "explicit (Morris operator; viscous time-step limit)");
   return out;
 }
 

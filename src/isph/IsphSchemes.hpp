@@ -13,6 +13,10 @@
 //   shifting         { enabled on; coefficient 2; maxShift 0.2; }   // Lind et al. (2012)
 //   timeStep         { forceFactor 0.25; viscousFactor 0.125; maxGrowth 1.1; }
 //   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
+//   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6 (only when a
+//                                    // material has one): semi-implicit solve or explicit sum
+//   wallFriction     { slipSpeed 1e-5; }  // m/s; Coulomb walls stick below it (default
+//                                    // 1e-4 sqrt(|g| dx))
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -20,6 +24,7 @@
 namespace isph {
 
 enum class PpeSource { densityInvariant, divergence, mixed };
+enum class ViscousTerm { implicit, explicit_ };
 
 struct IsphSchemes {
   std::string kernel = "WendlandC2";
@@ -48,6 +53,9 @@ struct IsphSchemes {
   double maxGrowth = 1.1;        // dt may grow by at most this factor per step
 
   double wallSafeguardDistance = 0.5;  // in dx
+
+  ViscousTerm viscousTerm = ViscousTerm::implicit;
+  double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
 
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.

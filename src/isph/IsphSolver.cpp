@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <numbers>
 
 #include "core/Log.hpp"
 #include "core/fields/FieldIO.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "isph/EffectiveViscosity.hpp"
 #include "isph/Gravity.hpp"
+#include "isph/MaterialGradient.hpp"
+#include "isph/WallBoundaryPressure.hpp"
 #include "isph/IntermediateVelocity.hpp"
 #include "isph/ParticleShifting.hpp"
 #include "isph/VelocityCorrection.hpp"
@@ -60,11 +65,24 @@ IsphSolver::IsphSolver(const Time& time) {
   g_ = readGravity(caseDir);
   kernel_ = makeKernel(schemes_.kernel, schemes_.hOverDx * ps_.cloud.properties.spacing, dim);
   initialiseParticleSystem(ps_, *materials_, *kernel_);
+  setSceneScales();
 
   info("\nReading system/isphSolution");
   const Dictionary solution = readOptional(caseDir / "system" / "isphSolution", "system/isphSolution");
   ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"));
-  solution.checkKeywords();
+  if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
+    viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), dim);
+  }
+  solution.checkKeywords({"U"});
+  if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
+  friction_ = std::make_unique<WallFriction>(ps_, *materials_, schemes_.frictionSlipSpeed);
+  ps_.frictionWall.assign(ps_.size(), 0);
+  for (std::size_t b = ps_.wallBegin(); b < ps_.size(); ++b) {
+    const std::size_t w = ps_.isWall(b) ? b : static_cast<std::size_t>(ps_.parentWall[b]);
+    const label patch = ps_.cloud.patch[w];
+    ps_.frictionWall[b] = patch >= 0 && ps_.cloud.properties.patches[static_cast<std::size_t>(patch)].frictionAngle > 0;
+  }
+  initialiseWallPressure();
 
   freeSurface_ = std::make_unique<FreeSurfaceDetector>(
       schemes_.freeSurfaceThreshold, schemes_.freeSurfaceGradient, schemes_.minNeighbourFraction,
@@ -85,8 +103,11 @@ IsphSolver::IsphSolver(const Time& time) {
        ps_.nWall, ps_.nDummy, ps_.dx, kernel_->h());
   for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
   for (const auto& p : ps_.cloud.properties.patches) {
-    info("    wall patch {}: no penetration (PPE wall particles + Neumann dummies){}", p.name,
-         p.frictionAngle > 0 ? fmt::format(", friction angle {} deg", p.frictionAngle) : "");
+    info("    wall patch {}: no penetration (Neumann wall pressure); fluids stick; granular material {}", p.name,
+         p.frictionAngle > 0 && friction_->active()
+             ? fmt::format("slides with Coulomb friction, angle {} deg (tan = {:.4g}), sticking below {:.3g} m/s",
+                           p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), schemes_.frictionSlipSpeed)
+             : "slides freely (no friction angle)");
   }
   info("    gravity ({} {} {}) m/s^2", g_.x(), g_.y(), g_.z());
   infoLine(schemes_.describe());
@@ -94,12 +115,102 @@ IsphSolver::IsphSolver(const Time& time) {
 
 IsphSolver::~IsphSolver() = default;
 
+void IsphSolver::setSceneScales() {
+  // Each material's height along gravity (its extent if there is no gravity).
+  const Vec3 up = g_.norm() > 0 ? Vec3(-g_ / g_.norm()) : Vec3::UnitY();
+  for (std::size_t m = 0; m < materials_->size(); ++m) {
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+      if (static_cast<std::size_t>(ps_.cloud.material[a]) != m) continue;
+      lo = std::min(lo, up.dot(ps_.cloud.positions[a]));
+      hi = std::max(hi, up.dot(ps_.cloud.positions[a]));
+    }
+    const double height = hi > lo ? hi - lo + ps_.dx : ps_.dx;
+    (*materials_)[m].adaptToScene({.height = height, .gravity = g_.norm(), .spacing = ps_.dx});
+  }
+}
+
+void IsphSolver::prepareWallPressure(const std::vector<char>& surface) {
+  ps_.wallPullLimit.assign(ps_.size(), 0.0);
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+    ps_.wallPullLimit[a] = surface[a] ? 0.0 : std::max(ps_.cloud.p[a], 0.0);
+  }
+  ps_.wallTangentialGradient.assign(ps_.nMaterial, Vec3::Zero());
+  const std::vector<Vec3> gradP = friction_->slidingMaterial()
+                                      ? materialPressureGradient(ps_, schemes_.correctionMinDeterminant)
+                                      : std::vector<Vec3>();
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+    const bool slides = (*materials_)[static_cast<std::size_t>(ps_.cloud.material[a])].wallContact() ==
+                        WallContact::coulombFriction;
+    ps_.wallTangentialGradient[a] = slides ? gradP[a] : Vec3(ps_.rho[a] * g_);
+  }
+}
+
+void IsphSolver::initialiseWallPressure() {
+  // A case from particleMesh has no wall pressures yet (a restart has them): the walls take
+  // the pressure of material at rest against them, so that the first step has wall friction.
+  const auto& p = ps_.cloud.p;
+  if (!friction_->active() || std::any_of(p.begin() + static_cast<long>(ps_.wallBegin()), p.end(),
+                                          [](double v) { return v != 0.0; })) {
+    return;
+  }
+  ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+  prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
+  std::vector<Vec3> atRest(ps_.size(), Vec3::Zero());
+  for (std::size_t a = 0; a < ps_.nMaterial; ++a) atRest[a] = ps_.cloud.U[a] + g_;  // u* = u + g dt, dt = 1
+  updateWallPressure(ps_, atRest, g_, 1.0);
+}
+
+void IsphSolver::updateRheology() {
+  if (!materials_->anyDeviatoricStress()) {
+    eta_.clear();
+    return;
+  }
+  strain_.compute(ps_, *materials_, correction_, schemes_.correctionMinDeterminant);
+  maxNu_ = effectiveViscosity(ps_, *materials_, strain_, eta_);
+}
+
+void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
+  const double dt = time.deltaT();
+  {
+    auto t = timer_.scope("rheology");
+    updateRheology();
+    friction_->update(ps_);
+  }
+  if (viscous_) {
+    report.viscous = viscous_->solve(ps_, *materials_, eta_, friction_.get(), g_, dt, kernel_->h(), ustar_);
+    timer_.add("viscous assembly", viscous_->assemblySeconds());
+    for (const auto& perf : report.viscous) {
+      timer_.add("viscous solve", perf.assemblySeconds + perf.setupSeconds + perf.solveSeconds);
+      if (!perf.converged) {
+        fatalError(fmt::format("the implicit viscous step did not converge for {} at time {}: residual {:.3g} "
+                               "after {} iterations.\n    The last written time directory is intact; try more "
+                               "maxIter or another preconditioner in system/isphSolution U, or a smaller etaMax.",
+                               perf.field, time.timeName(), perf.finalResidual, perf.iterations));
+      }
+    }
+    maxViscousAcceleration_ = 0;
+    return;
+  }
+  auto t = timer_.scope("intermediate velocity");
+  maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, kernel_->h(), ustar_);
+  if (friction_->active()) friction_->applyExplicit(ps_, dt, ustar_);
+}
+
 TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
   double maxSpeed = 0;
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) maxSpeed = std::max(maxSpeed, ps_.cloud.U[a].norm());
+  // The explicit deviatoric term is stable below dt ≤ C_ν ρ h²/η: the largest η/ρ of the
+  // last step (the models' bound before the first); the implicit step has no such limit.
   double maxNu = 0;
-  for (std::size_t i = 0; i < materials_->size(); ++i) {
-    maxNu = std::max(maxNu, (*materials_)[i].maxViscosity() / (*materials_)[i].rho());
+  if (!viscous_) {
+    if (eta_.empty()) {
+      for (std::size_t i = 0; i < materials_->size(); ++i) {
+        maxNu = std::max(maxNu, (*materials_)[i].maxViscosity() / (*materials_)[i].rho());
+      }
+    } else {
+      maxNu = maxNu_;
+    }
   }
   const double force = g_.norm() + maxViscousAcceleration_;
   const double previous = time.timeIndex() > 0 ? time.deltaT() : 0.0;
@@ -120,15 +231,9 @@ StepReport IsphSolver::step(const Time& time) {
     correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
     freeSurface_->detect(ps_);
     report.freeSurface = freeSurface_->nSurfaceMaterial();
-    ps_.wallPullLimit.assign(ps_.size(), 0.0);
-    for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
-      ps_.wallPullLimit[a] = freeSurface_->flags()[a] ? 0.0 : std::max(ps_.cloud.p[a], 0.0);
-    }
+    prepareWallPressure(freeSurface_->flags());
   }
-  {
-    auto t = timer_.scope("intermediate velocity");
-    maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, g_, dt, kernel_->h(), ustar_);
-  }
+  intermediateVelocity(time, report);
   {
     report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
     timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
@@ -196,6 +301,11 @@ void IsphSolver::write(Time& time) {
   flags.resize(ps_.size(), 0);
   options.location = fmt::format("{}/lagrangian/{}", time.timeName(), ps_.cloud.name);
   writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", flags, options);
+  if (materials_->anyDeviatoricStress()) {
+    // τ = 2 η D at the written state (what toVTK shows and the wall force integrates).
+    updateRheology();
+    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", deviatoricStress(ps_, strain_, eta_), options);
+  }
   time.writeTimeState(dir.path());
   dir.commit();
   time.purgeOldWrites();

@@ -10,15 +10,19 @@
 #include "core/PhaseTimer.hpp"
 #include "core/time/Time.hpp"
 #include "isph/FreeSurfaceDetector.hpp"
+#include "isph/ImplicitViscousStep.hpp"
 #include "isph/IsphSchemes.hpp"
 #include "isph/KernelGradientCorrection.hpp"
 #include "isph/ParticleSystem.hpp"
 #include "isph/PressurePoissonEquation.hpp"
+#include "isph/StrainRate.hpp"
+#include "isph/WallFriction.hpp"
 #include "isph/TimeStepControl.hpp"
 
 namespace isph {
 
 struct StepReport {
+  std::vector<SolverPerformance> viscous;  // the implicit deviatoric term, one per component
   SolverPerformance ppe;
   std::size_t freeSurface = 0;
   std::size_t wallSafeguard = 0;
@@ -50,6 +54,13 @@ class IsphSolver {
 
  private:
   void checkDomain(const Time& time) const;
+  void setSceneScales();
+  // The wall pull limits and tangential pressure gradients that WallBoundaryPressure uses.
+  void prepareWallPressure(const std::vector<char>& freeSurface);
+  void initialiseWallPressure();
+  // Strain rate and η of the material particles at the current state (empty η if inviscid).
+  void updateRheology();
+  void intermediateVelocity(const Time& time, StepReport& report);
 
   std::size_t totalWallCrossings_ = 0;
   IsphSchemes schemes_;
@@ -61,6 +72,11 @@ class IsphSolver {
   std::unique_ptr<FreeSurfaceDetector> freeSurface_;
   std::unique_ptr<PressurePoissonEquation> ppe_;
   std::vector<Vec3> ustar_;
+  StrainRate strain_;
+  std::vector<double> eta_;  // effective viscosity of the material particles (time n)
+  double maxNu_ = 0;          // the largest η/ρ of the last step (explicit viscous limit)
+  std::unique_ptr<WallFriction> friction_;
+  std::unique_ptr<ImplicitViscousStep> viscous_;
   Vec3 domainMin_, domainMax_;
   double maxViscousAcceleration_ = 0;
   long stepsSinceReorder_ = 0;

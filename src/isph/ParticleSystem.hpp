@@ -25,6 +25,8 @@ struct ParticleSystem {
   std::vector<int> parentWall; // dummy particle -> the wall particle it extends (-1 for others)
   double wallRho = 0;          // the wall reference density (mass-weighted mean of the materials)
   std::vector<double> wallPullLimit;  // the most suction a wall may exert (WallBoundaryPressure)
+  std::vector<Vec3> wallTangentialGradient;  // ∇p along a friction wall as seen from a (WallBoundaryPressure)
+  std::vector<char> frictionWall;  // boundary particle of a patch with a friction angle
   double latticeSum = 1;       // Σ_b V_b W_ab of a full lattice (self included): θ = 1 at rest
 
   NeighbourList neighbours;

@@ -3,7 +3,7 @@
 // dummy particles. Seen from a material particle a, a boundary particle b (wall or dummy,
 // with the outward normal n of its wall) holds the pressure extrapolated from a,
 //
-//   p_b(a) = p_a + ∇p·(x_b − x_a),  ∇p·n = ρ_a min(0, u*_a·n)/dt,  ∇p·t = ρ_a g·t,
+//   p_b(a) = p_a + ∇p·(x_b − x_a),  ∇p·n = ρ_a u*_a·n/dt,  ∇p·t = G_a·t,
 //
 // The normal part is the projection's wall condition ∂p/∂n = ρ u*·n/dt (u·n = 0 after
 // Eq. 11). Towards the wall it holds in full (a wall pushes). Away from it, it would pull
@@ -13,8 +13,12 @@
 // (0 on the free surface). Material in contact under pressure is held (without this, a fluid
 // at rest drifts off the walls, growing by a few per cent per step); material at p = 0 is
 // free to leave.
-// At rest u* = g dt and p_b(a) = p_a + ρ g·(x_b − x_a): the hydrostatic field is exact in
-// every direction. The same p_b(a) enters the PPE row of a (Eq. 10) and the pressure
+// Along the wall, G_a = ρ_a g (hydrostatic, Adami et al. 2012), except for granular material
+// on a patch with friction: there the friction carries the weight along the wall, not a
+// pressure gradient (on an infinite slope at rest ∂p/∂t = 0, and ρ g·t would push the bed
+// row uphill), so G_a = ps.wallTangentialGradient[a], the material's own lagged pressure
+// gradient (MaterialGradient). For a fluid at rest u* = g dt and p_b(a) = p_a + ρ g·(x_b − x_a):
+// the hydrostatic field is exact in every direction. The same p_b(a) enters the PPE row of a (Eq. 10) and the pressure
 // gradient of a (Eq. 11), so the two stay consistent.
 #include <algorithm>
 #include <vector>
@@ -35,7 +39,8 @@ inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<
   const Vec3 rba = ps.cloud.positions[b] - ps.cloud.positions[a];
   const double rn = rba.dot(n);
   const double normal = ps.rho[a] * ustar[a].dot(n) / dt * rn;  // rn < 0: pushes when moving in
-  return std::max(normal, -ps.wallPullLimit[a]) + ps.rho[a] * g.dot(rba - rn * n);
+  const Vec3 G = ps.frictionWall[b] ? ps.wallTangentialGradient[a] : Vec3(ps.rho[a] * g);
+  return std::max(normal, -ps.wallPullLimit[a]) + G.dot(rba - rn * n);
 }
 
 // After the solve: each wall and dummy particle takes the Shepard (kernel-weighted) mean of

@@ -29,6 +29,7 @@ void run(const isph::ArgList& args) {
     isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
                time.settings().adjustTimeStep ? limits.limiting() : "fixed");
     const isph::StepReport report = solver.step(time);
+    for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
     isph::logSolverPerformance(report.ppe);
     isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  wall safeguard {}  "
                "wall crossings {}",

@@ -11,6 +11,18 @@
 
 namespace isph {
 
+// How a material meets a wall tangentially: a fluid sticks (no slip); a granular material
+// slides with Coulomb friction from the wall patch's friction angle (WallFriction).
+enum class WallContact { noSlip, coulombFriction };
+
+// The scales of the scene a material sits in, for defaults derived from the scene
+// (the regularisation of the rigid-plastic model): its height along gravity, |g|, dx.
+struct SceneScales {
+  double height = 0;   // [m] extent of the material's particles along gravity
+  double gravity = 0;  // [m/s^2]
+  double spacing = 0;  // [m] particle spacing
+};
+
 class MaterialModel {
  public:
   MaterialModel(std::string name, const Dictionary& dict);
@@ -26,6 +38,10 @@ class MaterialModel {
   virtual double viscosity(double p, double shearRate) const = 0;
   // Upper bound of viscosity() (for the explicit viscous time-step limit).
   virtual double maxViscosity() const = 0;
+  virtual WallContact wallContact() const { return WallContact::noSlip; }
+  // Called once the particles are known, before describe(): models whose defaults
+  // depend on the scene set them here.
+  virtual void adaptToScene(const SceneScales&) {}
   // One line for the log.
   virtual std::string describe() const = 0;
 

@@ -16,6 +16,7 @@ class MaterialTable {
 
   std::size_t size() const { return models_.size(); }
   const MaterialModel& operator[](std::size_t i) const { return *models_[i]; }
+  MaterialModel& operator[](std::size_t i) { return *models_[i]; }
   bool anyDeviatoricStress() const;
   double maxViscosity() const;
   double maxRho() const;

@@ -1,0 +1,149 @@
+#include "isph/ImplicitViscousStep.hpp"
+
+#include <chrono>
+
+#include "core/dictionary/Dictionary.hpp"
+#include "isph/WallBoundaryPressure.hpp"
+
+namespace isph {
+
+ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimension) {
+  static const char* names[] = {"Ux", "Uy", "Uz"};
+  for (int d = 0; d < dimension; ++d) solvers_.push_back(makeLinearSolver(solverDict, names[d]));
+}
+
+ImplicitViscousStep::~ImplicitViscousStep() = default;
+
+std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& ps, const MaterialTable& materials,
+                                                          const std::vector<double>& eta,
+                                                          const WallFriction* friction, const Vec3& g, double dt,
+                                                          double h, std::vector<Vec3>& ustar) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const long nMat = static_cast<long>(ps.nMaterial);
+  const double eta2 = 0.01 * h * h;
+  const bool drag = friction && friction->active();
+
+  // The pattern: each material particle and its material neighbours.
+  system_.firstRow = 0;
+  system_.symmetricHint = true;
+  system_.rowStart.assign(static_cast<std::size_t>(nMat) + 1, 0);
+  for (long a = 0; a < nMat; ++a) {
+    int count = 1;
+    for (long k = nl.start[static_cast<std::size_t>(a)]; k < nl.start[static_cast<std::size_t>(a) + 1]; ++k) {
+      count += ps.isMaterial(static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]));
+    }
+    system_.rowStart[static_cast<std::size_t>(a) + 1] = system_.rowStart[static_cast<std::size_t>(a)] + count;
+  }
+  const auto nnz = static_cast<std::size_t>(system_.rowStart.back());
+  system_.columns.resize(nnz);
+  system_.values.resize(nnz);
+  system_.rhs.resize(static_cast<std::size_t>(nMat));
+
+  const int dim = ps.dimension;
+  std::vector<Vec3> rhs(static_cast<std::size_t>(nMat));
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < nMat; ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
+    const double ma = c.mass[a];
+    const bool withWalls = materials[static_cast<std::size_t>(c.material[a])].wallContact() == WallContact::noSlip;
+    auto pos = static_cast<std::size_t>(system_.rowStart[a]);
+    const std::size_t diag = pos++;
+    Vec3 r = ma * (c.U[a] / dt + g);
+    double diagonal = ma / dt;
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const bool material = ps.isMaterial(b);
+      if (!material && !withWalls) continue;
+      const double r2 = (c.positions[a] - c.positions[b]).squaredNorm();
+      const double mb = ps.rho[b] * ps.volume[b];
+      const double etaB = material ? eta[b] : eta[a];
+      const double kappa = -ma * mb * (eta[a] + etaB) / (ps.rho[a] * ps.rho[b]) * nl.F[kk] * r2 / (r2 + eta2);
+      diagonal += kappa;
+      if (material) {
+        system_.columns[pos] = static_cast<long>(b);
+        system_.values[pos] = -kappa;
+        ++pos;
+      } else {
+        // The wall as the no-slip term sees it: at rest along the wall, and moving with a in
+        // its normal direction and with the gravity increment, both the PPE's to resolve.
+        const Vec3& n = wallNormal(ps, b);
+        r += kappa * (dt * g + c.U[a].dot(n) * n);
+      }
+    }
+    system_.columns[diag] = static_cast<long>(a);
+    system_.values[diag] = diagonal;
+    rhs[a] = r;
+  }
+  assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // Coulomb friction by an active set: a particle next to a friction wall either sticks (a
+  // stiff tangential drag, whose reaction is the force needed to hold it) or slides (the
+  // force F_a against its sliding direction). Start from the state at time n; a sticking
+  // particle whose reaction exceeds F_a starts to slide, a sliding one that would reverse
+  // sticks; repeat until no particle changes (a few passes at most).
+  const std::size_t n = static_cast<std::size_t>(nMat);
+  std::vector<double> diagonal(n);
+  for (std::size_t a = 0; a < n; ++a) diagonal[a] = system_.values[static_cast<std::size_t>(system_.rowStart[a])];
+  std::vector<char> stuck(n, 0);
+  std::vector<Vec3> slideDirection(n, Vec3::Zero());
+  const double stickRate = 1e4 / dt;  // u_t of a sticking particle is its reaction × dt/(10⁴ m)
+  if (drag) {
+    for (std::size_t a = 0; a < n; ++a) {
+      if (friction->capacity(a) <= 0) continue;
+      const Vec3 ut = friction->tangential(a, c.U[a]);
+      stuck[a] = ut.norm() <= friction->slipSpeed();
+      if (!stuck[a]) slideDirection[a] = ut.normalized();
+    }
+  }
+  std::vector<SolverPerformance> perf;
+  std::vector<double> x(n);
+  ustar.assign(ps.size(), Vec3::Zero());
+  for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * g;  // warm start: the explicit predictor
+  for (int pass = 0; pass < maxFrictionPasses; ++pass) {
+    std::vector<Vec3> b = rhs;
+    for (std::size_t a = 0; a < n && drag; ++a) {
+      double extra = 0;
+      if (friction->capacity(a) > 0) {
+        const Vec3& nrm = friction->normal(a);
+        if (stuck[a]) {
+          extra = c.mass[a] * stickRate;
+          b[a] += extra * (c.U[a] + dt * g).dot(nrm) * nrm;  // the drag acts on u_t only
+        } else {
+          b[a] -= friction->capacity(a) * slideDirection[a];
+        }
+      }
+      system_.values[static_cast<std::size_t>(system_.rowStart[a])] = diagonal[a] + extra;
+    }
+    perf.clear();
+    for (int d = 0; d < dim; ++d) {
+      for (std::size_t a = 0; a < n; ++a) {
+        system_.rhs[a] = b[a][d];
+        x[a] = ustar[a][d];
+      }
+      perf.push_back(solvers_[static_cast<std::size_t>(d)]->solve(system_, x));
+      for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
+    }
+    if (!drag) break;
+    std::size_t changed = 0;
+    for (std::size_t a = 0; a < n; ++a) {
+      if (friction->capacity(a) <= 0) continue;
+      const Vec3 ut = friction->tangential(a, ustar[a]);
+      if (stuck[a] && c.mass[a] * stickRate * ut.norm() > friction->capacity(a)) {
+        stuck[a] = 0;
+        slideDirection[a] = ut.normalized();
+        ++changed;
+      } else if (!stuck[a] && ut.dot(slideDirection[a]) < 0) {
+        stuck[a] = 1;
+        ++changed;
+      }
+    }
+    frictionPasses_ = pass + 1;
+    if (changed == 0) break;
+  }
+  return perf;
+}
+
+}  // namespace isph

@@ -1,0 +1,91 @@
+#include "isph/WallFriction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace isph {
+
+WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materials, double slipSpeed)
+    : slipSpeed_(slipSpeed) {
+  for (const auto& patch : ps.cloud.properties.patches) {
+    tanDelta_.push_back(std::tan(patch.frictionAngle * std::numbers::pi / 180.0));
+  }
+  bool anyFriction = std::any_of(tanDelta_.begin(), tanDelta_.end(), [](double t) { return t > 0; });
+  bool anySlides = false;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    slides_.push_back(materials[i].wallContact() == WallContact::coulombFriction);
+    anySlides = anySlides || slides_.back();
+  }
+  anySlides_ = anySlides;
+  active_ = anyFriction && anySlides;
+}
+
+void WallFriction::update(const ParticleSystem& ps) {
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const std::size_t n = ps.size();
+  capacity_.assign(ps.nMaterial, 0.0);
+  normal_.assign(ps.nMaterial, Vec3::Zero());
+  if (!active_) return;
+  const double area = std::pow(ps.dx, ps.dimension - 1);
+
+  // T_w / Σ_c W_cw for every wall particle of a friction patch.
+  std::vector<double> share(n, 0.0);
+  const long wallEnd = static_cast<long>(ps.dummyBegin());
+#pragma omp parallel for schedule(static)
+  for (long iw = static_cast<long>(ps.wallBegin()); iw < wallEnd; ++iw) {
+    const auto w = static_cast<std::size_t>(iw);
+    const double tanDelta = tanDelta_[static_cast<std::size_t>(c.patch[w])];
+    if (tanDelta <= 0 || c.p[w] <= 0) continue;
+    double sum = 0;
+    for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
+      const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+      if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])]) sum += nl.W[static_cast<std::size_t>(k)];
+    }
+    if (sum > 0) share[w] = tanDelta * c.p[w] * area / sum;
+  }
+
+  const long nMat = static_cast<long>(ps.nMaterial);
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < nMat; ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
+    if (!slides_[static_cast<std::size_t>(c.material[a])]) continue;
+    double F = 0;
+    Vec3 normal = Vec3::Zero();
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto w = static_cast<std::size_t>(nl.index[kk]);
+      if (!ps.isWall(w) || tanDelta_[static_cast<std::size_t>(c.patch[w])] <= 0) continue;
+      F += share[w] * nl.W[kk];
+      normal += nl.W[kk] * c.normal[w];
+    }
+    const double len = normal.norm();
+    if (F > 0 && len > 0) {
+      capacity_[a] = F;
+      normal_[a] = normal / len;
+    }
+  }
+}
+
+double WallFriction::totalCapacity() const {
+  double sum = 0;
+  for (double f : capacity_) sum += f;
+  return sum;
+}
+
+void WallFriction::applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u) const {
+  const long nMat = static_cast<long>(ps.nMaterial);
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < nMat; ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
+    if (capacity_[a] <= 0) continue;
+    const Vec3 ut = tangential(a, u[a]);
+    const double speed = ut.norm();
+    if (speed <= 0) continue;
+    const double loss = std::min(dt * capacity_[a] / ps.cloud.mass[a], speed);  // cannot reverse u_t
+    u[a] -= loss / speed * ut;
+  }
+}
+
+}  // namespace isph

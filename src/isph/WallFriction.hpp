@@ -1,0 +1,63 @@
+#pragma once
+// Coulomb friction between a granular material and the wall patches (the paper: "the
+// tangential drag force is equated to the normal reaction multiplied by the wall frictional
+// coefficient"; numerics.md §3). Each wall particle w of a patch with friction angle δ > 0
+// can carry a tangential force up to
+//
+//   T_w = tan δ · σ_w · A_w,   σ_w = max(p_w, 0) (the wall pressure), A_w = dx^(d−1),
+//
+// shared among its material neighbours c in proportion to W_cw. So material particle a
+// has the friction capacity F_a = Σ_w T_w W_aw / Σ_c W_cw [N, per metre in 2D] along the
+// mean wall normal n_a, and the sum over the material is exactly tan δ × the normal force.
+//
+// Only materials with WallContact::coulombFriction feel it (a fluid sticks instead); a
+// patch without a friction angle is a free-slip wall for them.
+//
+// Two ways to apply it, one per treatment of the viscous term:
+// - explicit: the tangential velocity loses dt F_a/m_a, capped so that the step cannot
+//   reverse it (a particle that would reverse sticks);
+// - implicit (inside the semi-implicit viscous solve): a drag K_a u_t with the rate
+//   K_a = F_a / (m_a (|u_t| + u_slip)), |u_t| from the start of the step. While sliding it is
+//   the Coulomb force; below the slip speed u_slip it makes the wall stick, and a wall that
+//   cannot hold the material lets it go (|u_t| grows geometrically until it slides).
+#include <vector>
+
+#include "core/Types.hpp"
+#include "isph/ParticleSystem.hpp"
+
+namespace isph {
+
+class WallFriction {
+ public:
+  // Active only if some patch has a friction angle and some material slides on walls.
+  WallFriction(const ParticleSystem& ps, const MaterialTable& materials, double slipSpeed);
+
+  bool active() const { return active_; }
+  // Some material slides on walls (whether or not any patch has friction).
+  bool slidingMaterial() const { return anySlides_; }
+  double slipSpeed() const { return slipSpeed_; }
+
+  // Capacities and normals from the current positions and wall pressures.
+  void update(const ParticleSystem& ps);
+
+  double capacity(std::size_t a) const { return capacity_[a]; }
+  // Σ_a F_a: tan δ times the normal force on the friction walls [N, per metre in 2D].
+  double totalCapacity() const;
+  const Vec3& normal(std::size_t a) const { return normal_[a]; }
+
+  // The tangential part of u relative to the wall next to a.
+  Vec3 tangential(std::size_t a, const Vec3& u) const { return u - normal_[a] * normal_[a].dot(u); }
+  // The explicit capped update of the material velocities u (size ≥ nMaterial).
+  void applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u) const;
+
+ private:
+  bool active_ = false;
+  bool anySlides_ = false;
+  double slipSpeed_ = 0;
+  std::vector<double> tanDelta_;   // per patch
+  std::vector<char> slides_;       // per material: coulombFriction
+  std::vector<double> capacity_;   // F_a
+  std::vector<Vec3> normal_;       // n_a
+};
+
+}  // namespace isph
