@@ -12,6 +12,14 @@
 
 namespace isph::test {
 
+// The whole content of a text file ("" if it cannot be read).
+inline std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 class CaseRunner {
  public:
   CaseRunner(const std::string& tutorial, const std::string& name)
