@@ -57,6 +57,12 @@ class CaseRunner {
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
   }
 
+  // particleMesh, then the solver, each expected to succeed (call in ASSERT_NO_FATAL_FAILURE).
+  void meshAndSolve() const {
+    ASSERT_EQ(run(PARTICLEMESH_EXE, "particleMesh"), 0) << "see " << dir_ / "log.particleMesh";
+    ASSERT_EQ(run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << dir_ / "log.isphLandslideFoam";
+  }
+
   // The rest of the last line of log.<name> that starts with `prefix` (trimmed); "" if none.
   std::string logValue(const std::string& name, const std::string& prefix) const {
     std::ifstream in(dir_ / ("log." + name));

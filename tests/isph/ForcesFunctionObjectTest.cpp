@@ -50,8 +50,7 @@ TEST(ForcesFunctionObject, AgreesWithSampleForcesAndWithRhoGHSquaredOverTwo) {
   c.set("system/particleMeshDict", "spacing", "0.01");
   c.set("system/controlDict", "endTime", "0.1");
   c.set("system/controlDict", "writeInterval", "0.05");
-  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
-  ASSERT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << c.path() / "log.isphLandslideFoam";
+  ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
   EXPECT_NE(c.logValue("isphLandslideFoam", "rightWallForce:"), "") << "the log lists the function object";
   ASSERT_EQ(c.run(SAMPLEFORCES_EXE, "sampleForces"), 0);
 

@@ -6,6 +6,7 @@
 #include "core/app/Application.hpp"
 #include "core/time/Time.hpp"
 #include "isph/IsphSolver.hpp"
+#include "isph/StepWithRetry.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "postProcessing/functionObjects/FunctionObjectList.hpp"
 
@@ -31,7 +32,7 @@ void run(const isph::ArgList& args) {
     ++time;
     isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
                time.settings().adjustTimeStep ? limits.limiting() : "fixed");
-    const isph::StepReport report = solver.step(time);
+    const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step
     isph::logSolverPerformance(report.ppe);
     isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  wall safeguard {}  "
                "wall crossings {}",
