@@ -226,6 +226,9 @@ StepReport IsphSolver::step(const Time& time) {
     if (stepsSinceReorder_++ % reorderInterval == 0) reorderMaterialParticles(ps_, kernel_->supportRadius());
     ps_.neighbours.build(ps_.cloud.positions, *kernel_);
   }
+  // The pressure is the only particle field changed before the PPE has converged (positions
+  // and velocities change after it): kept to restore the step start if it does not.
+  pStart_ = ps_.cloud.p;
   {
     auto t = timer_.scope("kernel and corrections");
     correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
@@ -240,11 +243,9 @@ StepReport IsphSolver::step(const Time& time) {
     timer_.add("PPE setup", report.ppe.setupSeconds);
     timer_.add("PPE solve", report.ppe.solveSeconds);
   }
-  if (!report.ppe.converged) {
-    fatalError(fmt::format("the pressure Poisson equation did not converge at time {}: residual {:.3g} after {} "
-                           "iterations.\n    The last written time directory is intact; try a "
-                           "smaller maxCo or maxDeltaT, or more maxIter in system/isphSolution.",
-                           time.timeName(), report.ppe.finalResidual, report.ppe.iterations));
+  if (!report.ppe.converged) {  // the particles as at the step start; the caller decides (stepWithRetry)
+    ps_.cloud.p = pStart_;
+    return report;
   }
   {
     auto t = timer_.scope("velocity correction and shifting");

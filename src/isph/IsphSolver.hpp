@@ -41,7 +41,9 @@ class IsphSolver {
 
   // The time step for the next step (adjustTimeStep), with the limit that set it.
   TimeStepLimits nextDeltaT(const Time& time) const;
-  // Advance the particles by time.deltaT() (call after ++time).
+  // Advance the particles by time.deltaT() (call after ++time). When the PPE does not
+  // converge (report.ppe.converged false) the particles are left as at the step start, so
+  // that the step can be redone with a smaller deltaT (stepWithRetry).
   StepReport step(const Time& time);
   // Write the cloud into the current time directory (atomically) and the time state.
   void write(Time& time);
@@ -77,6 +79,7 @@ class IsphSolver {
   double maxNu_ = 0;          // the largest η/ρ of the last step (explicit viscous limit)
   std::unique_ptr<WallFriction> friction_;
   std::unique_ptr<ImplicitViscousStep> viscous_;
+  std::vector<scalar> pStart_;  // p at the step start (restored when the PPE fails)
   Vec3 domainMin_, domainMax_;
   double maxViscousAcceleration_ = 0;
   long stepsSinceReorder_ = 0;

@@ -12,6 +12,14 @@
 
 namespace isph::test {
 
+// The whole content of a text file ("" if it cannot be read).
+inline std::string readText(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 class CaseRunner {
  public:
   CaseRunner(const std::string& tutorial, const std::string& name)
@@ -47,6 +55,12 @@ class CaseRunner {
     const std::string cmd = "'" + exe + "' " + options + " -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
     const int rc = std::system(cmd.c_str());
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  }
+
+  // particleMesh, then the solver, each expected to succeed (call in ASSERT_NO_FATAL_FAILURE).
+  void meshAndSolve() const {
+    ASSERT_EQ(run(PARTICLEMESH_EXE, "particleMesh"), 0) << "see " << dir_ / "log.particleMesh";
+    ASSERT_EQ(run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << dir_ / "log.isphLandslideFoam";
   }
 
   // The rest of the last line of log.<name> that starts with `prefix` (trimmed); "" if none.

@@ -70,7 +70,7 @@ class HydrostaticWallForce : public ::testing::TestWithParam<double> {};
 
 TEST_P(HydrostaticWallForce, IsRhoGHSquaredOverTwo) {
   const double dx = GetParam(), rho = 1000, g = 9.81, H = 0.4;
-  CaseRunner c("hydrostaticTank", "hydrostaticWallForce");
+  CaseRunner c("hydrostaticTank", "hydrostaticWallForce-" + std::to_string(dx));  // one folder per instance: ctest -j runs them at once
   c.set("system/particleMeshDict", "spacing", std::to_string(dx));
   c.set("system/controlDict", "endTime", "0.1");
   c.set("system/controlDict", "writeInterval", "0.1");

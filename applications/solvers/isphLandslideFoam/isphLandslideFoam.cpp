@@ -1,11 +1,14 @@
 // isphLandslideFoam: incompressible SPH for flow-like landslides (the paper's projection
 // method, Eqs. 6-11). Reads the particles of the start time, steps them to endTime and
 // writes time directories as system/controlDict says; every time directory is a restart.
+// The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/time/Time.hpp"
 #include "isph/IsphSolver.hpp"
+#include "isph/StepWithRetry.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
+#include "postProcessing/functionObjects/FunctionObjectList.hpp"
 
 namespace {
 
@@ -19,6 +22,7 @@ const isph::ApplicationSpec spec{
 void run(const isph::ArgList& args) {
   isph::Time time(args.casePath());
   isph::Time::installSignalHandlers();
+  isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
   isph::IsphSolver solver(time);
 
   isph::info("\nStarting time loop\n");
@@ -28,7 +32,7 @@ void run(const isph::ArgList& args) {
     ++time;
     isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
                time.settings().adjustTimeStep ? limits.limiting() : "fixed");
-    const isph::StepReport report = solver.step(time);
+    const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step
     for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
     isph::logSolverPerformance(report.ppe);
     isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  wall safeguard {}  "
@@ -39,6 +43,8 @@ void run(const isph::ArgList& args) {
       solver.write(time);
       isph::info("    wrote time {}", time.timeName());
     }
+    // The cloud as written (no deviatoric stress field: the solver keeps none, writes none).
+    functions.execute(time, {.cloud = solver.particles().cloud});
     isph::info("{}\n", time.executionTimeLine());
   }
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());

@@ -149,7 +149,26 @@ Time& Time::operator++() {
     stopAt_ = StopAt::writeNow;
     info("Signal caught: writing at the end of this time step and stopping");
   }
+  stepStart_ = StepStart{value_, deltaT0_, deltaTSave_, endTime_, name_, index_, precision_, writeTimeIndex_};
+  advance();
+  return *this;
+}
 
+void Time::redoStep(double dt) {
+  if (!stepStart_) fatalError("Time::redoStep: no step to redo (called before the first time step)");
+  value_ = stepStart_->value;
+  deltaT0_ = stepStart_->deltaT0;
+  deltaTSave_ = stepStart_->deltaTSave;
+  endTime_ = stepStart_->endTime;
+  name_ = stepStart_->name;
+  index_ = stepStart_->index;
+  precision_ = stepStart_->precision;
+  writeTimeIndex_ = stepStart_->writeTimeIndex;
+  setDeltaT(dt);
+  advance();
+}
+
+void Time::advance() {
   deltaT0_ = deltaTSave_;
   deltaTSave_ = deltaT_;
   const std::string oldName = name_;
@@ -175,7 +194,6 @@ Time& Time::operator++() {
         oldPrecision, precision_, name_));
   }
   setWriteTime();
-  return *this;
 }
 
 void Time::setWriteTime() {

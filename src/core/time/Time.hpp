@@ -14,6 +14,7 @@
 #include <chrono>
 #include <deque>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/Types.hpp"
@@ -48,6 +49,11 @@ class Time {
   void adjustDeltaT(double dtWanted);
   // Re-read a modified controlDict, then advance one step and decide writeTime().
   Time& operator++();
+  // Take back the last ++ and advance again by `dt` (a failed step redone with a smaller
+  // one): time, index, name, the step history and the write decision are those of the
+  // step start, then advanced as ++ does (without re-reading controlDict). Only one step
+  // back: FatalError when called before any ++.
+  void redoStep(double dt);
   bool writeTime() const { return writeTime_; }
 
   // Write <timeDir>/uniform/time (value, name, index, deltaT, deltaT0) atomically; timeDir
@@ -69,7 +75,18 @@ class Time {
 
  private:
   void restoreTimeState();
+  void advance();
   void setWriteTime();
+
+  // What ++ changes, saved before it for redoStep.
+  struct StepStart {
+    double value, deltaT0, deltaTSave, endTime;
+    std::string name;
+    label index;
+    int precision;
+    long writeTimeIndex;
+  };
+  std::optional<StepStart> stepStart_;
 
   std::filesystem::path caseDir_;
   std::filesystem::path controlDictFile_;

@@ -1,5 +1,6 @@
 #pragma once
-// The columns of a set's force history, postProcessing/sampleForces/<firstTime>/<set>.dat:
+// The columns of a set's force history, postProcessing/sampleForces/<firstTime>/<set>.dat
+// (and the solver's patchForces function object, postProcessing/<name>/<startTime>/force.dat):
 // comment lines that state the set and the conventions, then a `# Time [s] Fx [N/m] ...`
 // line naming every column with its unit, then one tab-separated row per time.
 //

@@ -79,6 +79,36 @@ TEST(Time, AdjustableRunTimeHitsWriteTimesExactly) {
   EXPECT_EQ(t.value(), 1.0);
 }
 
+// A step whose solve failed is redone from its start with half the step: the time, index,
+// name, step history and write decision are as if the first attempt had never been made.
+TEST(Time, RedoStepTakesBackTheStepAndAdvancesByTheNewOne) {
+  test::TempCase c;
+  writeControlDict(c,
+                   "startFrom startTime; startTime 0; endTime 1; deltaT 0.05;\n"
+                   "writeControl adjustableRunTime; writeInterval 0.1;\n");
+  Time t(c.path());
+  EXPECT_THROW(t.redoStep(0.01), FatalError);  // nothing to redo yet
+  t.adjustDeltaT(0.05);
+  ++t;  // 0.05
+  t.adjustDeltaT(0.05);
+  ++t;  // 0.1: a write time
+  ASSERT_TRUE(t.writeTime());
+  EXPECT_EQ(t.timeIndex(), 2);
+  t.redoStep(0.025);
+  EXPECT_DOUBLE_EQ(t.value(), 0.075);
+  EXPECT_EQ(t.timeName(), "0.075");
+  EXPECT_EQ(t.timeIndex(), 2);
+  EXPECT_EQ(t.deltaT(), 0.025);
+  EXPECT_EQ(t.deltaT0(), 0.05);  // the step before the redone one
+  EXPECT_FALSE(t.writeTime()) << "0.075 is not a write time";
+  // The run goes on to the write time it missed.
+  t.adjustDeltaT(0.05);
+  ++t;
+  EXPECT_EQ(t.value(), 0.1);
+  EXPECT_TRUE(t.writeTime());
+  EXPECT_EQ(t.timeIndex(), 3);
+}
+
 TEST(Time, TimeStepControlWritesEveryNSteps) {
   test::TempCase c;
   writeControlDict(c,

@@ -1,0 +1,26 @@
+#pragma once
+// One time step with one retry (issue 4): when the pressure Poisson equation does not
+// converge within maxIter, the step is taken back (the solver leaves the particles as at the
+// step start), redone from the same start with half the step, and a warning says so. If the
+// retry does not converge either, the run stops with a FatalError that says which solve
+// failed, when (the time of each attempt, its deltaT, residual and iterations) and where to
+// act (system/isphSolution, controlDict); the last written time directory is untouched.
+//
+// After a successful retry an adjustTimeStep run sizes its next step as usual (growth from
+// the halved one limited by maxGrowth); a fixed-step run goes back to its deltaT.
+#include <functional>
+
+#include "core/time/Time.hpp"
+#include "isph/IsphSolver.hpp"
+
+namespace isph {
+
+// `step` advances the particles by time.deltaT() and, when its PPE fails, leaves them as at
+// the step start (IsphSolver::step does). Call after ++time.
+StepReport stepWithRetry(Time& time, const std::function<StepReport(const Time&)>& step);
+
+inline StepReport stepWithRetry(Time& time, IsphSolver& solver) {
+  return stepWithRetry(time, [&solver](const Time& t) { return solver.step(t); });
+}
+
+}  // namespace isph

@@ -1,0 +1,117 @@
+// The function objects of controlDict `functions`: patchForces writes the rows of
+// sampleForces' table every writeInterval steps into postProcessing/<name>/<startTime>/
+// force.dat, scales 2D forces to a width when it has one and says so in the header; an
+// unknown type or a bad writeInterval is an error that names the entry.
+#include "postProcessing/functionObjects/PatchForcesFunctionObject.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "../PostProcessingTestHelpers.hpp"
+#include "core/time/Time.hpp"
+#include "postProcessing/functionObjects/FunctionObjectList.hpp"
+
+namespace isph {
+namespace {
+
+using pptest::TempDir;
+
+// The data rows of a force.dat file, as numbers.
+std::vector<std::vector<double>> rows(const std::filesystem::path& file) {
+  std::vector<std::vector<double>> out;
+  std::istringstream in(pptest::readText(file));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    out.emplace_back();
+    for (double v; row >> v;) out.back().push_back(v);
+  }
+  return out;
+}
+
+Dictionary functionsDict(const std::string& text) {
+  return Dictionary::parse("functions {\n" + text + "\n}\n", "system/controlDict").subDict("functions");
+}
+
+class FunctionObjects : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    pptest::writeText(dir / "system/controlDict",
+                      "startFrom startTime; startTime 0; endTime 1; deltaT 0.1; writeInterval 10;\n");
+  }
+  TempDir dir;
+};
+
+// A flat bed of 10 wall particles 0.1 m apart under p = 1000 Pa: 1000 N per metre of width
+// pushing into the bed, exactly (sum of p dx); over a width of 0.3 m, 300 N.
+TEST_F(FunctionObjects, PatchForcesWritesEveryNStepsPerMetreOrOverTheWidth) {
+  Time time(dir.path());
+  FunctionObjectList functions(functionsDict("perMetre { type patchForces; patches (bed); }\n"
+                                             "wide { type patchForces; patches (bed); width 0.3; writeInterval 2; }"),
+                               time);
+  ASSERT_EQ(functions.size(), 2u);
+  EXPECT_EQ(functions[0].type(), "patchForces");
+  const ParticleCloud cloud = pptest::flatBed(10, 0.1, 1000.0);
+  for (int step = 0; step < 4; ++step) {
+    ++time;
+    functions.execute(time, {.cloud = cloud});
+  }
+
+  const auto perMetreFile = dir / "postProcessing/perMetre/0/force.dat";
+  const auto wideFile = dir / "postProcessing/wide/0/force.dat";
+  const auto perMetre = rows(perMetreFile);
+  const auto wide = rows(wideFile);
+  ASSERT_EQ(perMetre.size(), 4u) << "writeInterval 1: every step";
+  ASSERT_EQ(wide.size(), 2u) << "writeInterval 2: steps 2 and 4";
+  const int Fn = 3, Fy = 2, nWall = 16;  // 0-based columns of the 2D table (ForceTable.hpp)
+  EXPECT_NEAR(perMetre[0][0], 0.1, 1e-12);
+  EXPECT_NEAR(wide[0][0], 0.2, 1e-12);
+  EXPECT_NEAR(wide[1][0], 0.4, 1e-12);
+  for (const auto& r : perMetre) {
+    EXPECT_NEAR(r[Fn], 1000.0, 1e-9 * 1000) << "sum p dx per metre";
+    EXPECT_NEAR(r[Fy], -1000.0, 1e-9 * 1000);
+    EXPECT_EQ(r[nWall], 10);
+  }
+  for (const auto& r : wide) EXPECT_NEAR(r[Fn], 0.3 * 1000.0, 1e-9 * 300) << "width 0.3 m times the force per metre";
+
+  const std::string perMetreHeader = pptest::readText(perMetreFile);
+  const std::string wideHeader = pptest::readText(wideFile);
+  EXPECT_NE(perMetreHeader.find("per metre of width"), std::string::npos);
+  EXPECT_NE(perMetreHeader.find("# Time [s]\tFx [N/m]\tFy [N/m]\tFn [N/m]"), std::string::npos);
+  EXPECT_NE(wideHeader.find("width 0.3 m (forces over the width)"), std::string::npos);
+  EXPECT_NE(wideHeader.find("# Time [s]\tFx [N]\tFy [N]\tFn [N]"), std::string::npos);
+  EXPECT_NE(wideHeader.find("Mz [N m]"), std::string::npos);
+}
+
+TEST_F(FunctionObjects, NoFunctionsIsAnEmptyList) {
+  Time time(dir.path());
+  EXPECT_EQ(FunctionObjectList(time).size(), 0u);
+}
+
+TEST_F(FunctionObjects, UnknownTypeListsTheAvailableTypes) {
+  Time time(dir.path());
+  try {
+    FunctionObjectList(functionsDict("barrierForce { type forcez; patches (bed); }"), time);
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    const std::string report = e.report();
+    EXPECT_NE(report.find("forcez"), std::string::npos) << report;
+    EXPECT_NE(report.find("patchForces"), std::string::npos) << report;
+    EXPECT_NE(report.find("system/controlDict"), std::string::npos) << report;
+    EXPECT_EQ(e.where().line, 2) << report;
+  }
+}
+
+TEST_F(FunctionObjects, BadEntriesNameTheKeyword) {
+  Time time(dir.path());
+  for (const std::string& bad : {std::string("f { type patchForces; patches (bed); writeInterval 0; }"),
+                                 std::string("f { type patchForces; patches (bed); width -1; }"),
+                                 std::string("f { patches (bed); }"), std::string("f 3;")}) {
+    EXPECT_THROW(FunctionObjectList(functionsDict(bad), time), FatalError) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace isph
