@@ -140,7 +140,6 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
         ++changed;
       }
     }
-    frictionPasses_ = pass + 1;
     if (changed == 0) break;
   }
   return perf;

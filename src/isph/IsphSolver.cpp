@@ -161,6 +161,18 @@ void IsphSolver::initialiseWallPressure() {
   updateWallPressure(ps_, atRest, g_, 1.0);
 }
 
+const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
+  if (!materials_->anyDeviatoricStress()) return nullptr;
+  if (tauStep_ != stepsTaken_) {
+    // τ = 2 η D at the state after the step (what is written, what toVTK shows and what the
+    // wall force integrates), once per step however many callers ask.
+    updateRheology();
+    tau_ = isph::deviatoricStress(ps_, strain_, eta_);
+    tauStep_ = stepsTaken_;
+  }
+  return &tau_;
+}
+
 void IsphSolver::updateRheology() {
   if (!materials_->anyDeviatoricStress()) {
     eta_.clear();
@@ -219,6 +231,7 @@ TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
 }
 
 StepReport IsphSolver::step(const Time& time) {
+  ++stepsTaken_;
   const double dt = time.deltaT();
   StepReport report;
   {
@@ -302,10 +315,8 @@ void IsphSolver::write(Time& time) {
   flags.resize(ps_.size(), 0);
   options.location = fmt::format("{}/lagrangian/{}", time.timeName(), ps_.cloud.name);
   writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", flags, options);
-  if (materials_->anyDeviatoricStress()) {
-    // τ = 2 η D at the written state (what toVTK shows and the wall force integrates).
-    updateRheology();
-    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", deviatoricStress(ps_, strain_, eta_), options);
+  if (const auto* tau = deviatoricStress()) {
+    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", *tau, options);
   }
   time.writeTimeState(dir.path());
   dir.commit();

@@ -50,6 +50,10 @@ class IsphSolver {
 
   const ParticleSystem& particles() const { return ps_; }
   const PhaseTimer& timer() const { return timer_; }
+  const Kernel& kernel() const { return *kernel_; }
+  // τ = 2 η D of every particle after the last step (zero for walls), or null when no
+  // material has a deviatoric stress. Computed once per step, on first request.
+  const std::vector<SymmTensor>* deviatoricStress();
   // Material particles found behind a wall surface since the start of the run.
   std::size_t wallCrossings() const { return totalWallCrossings_; }
   const Vec3& gravity() const { return g_; }
@@ -83,6 +87,9 @@ class IsphSolver {
   Vec3 domainMin_, domainMax_;
   double maxViscousAcceleration_ = 0;
   long stepsSinceReorder_ = 0;
+  long stepsTaken_ = 0;
+  long tauStep_ = -1;
+  std::vector<SymmTensor> tau_;
   PhaseTimer timer_;
 };
 

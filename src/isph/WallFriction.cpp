@@ -68,12 +68,6 @@ void WallFriction::update(const ParticleSystem& ps) {
   }
 }
 
-double WallFriction::totalCapacity() const {
-  double sum = 0;
-  for (double f : capacity_) sum += f;
-  return sum;
-}
-
 void WallFriction::applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u) const {
   const long nMat = static_cast<long>(ps.nMaterial);
 #pragma omp parallel for schedule(static)

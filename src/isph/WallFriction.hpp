@@ -41,8 +41,6 @@ class WallFriction {
   void update(const ParticleSystem& ps);
 
   double capacity(std::size_t a) const { return capacity_[a]; }
-  // Σ_a F_a: tan δ times the normal force on the friction walls [N, per metre in 2D].
-  double totalCapacity() const;
   const Vec3& normal(std::size_t a) const { return normal_[a]; }
 
   // The tangential part of u relative to the wall next to a.

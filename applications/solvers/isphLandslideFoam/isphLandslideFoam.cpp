@@ -43,8 +43,10 @@ void run(const isph::ArgList& args) {
       solver.write(time);
       isph::info("    wrote time {}", time.timeName());
     }
-    // The cloud as written (no deviatoric stress field: the solver keeps none, writes none).
-    functions.execute(time, {.cloud = solver.particles().cloud});
+    // The state as written now: the deviatoric stress after the step, the neighbours found
+    // afresh over the moved particles (as sampleForces does on the written time).
+    functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
+                             .kernel = &solver.kernel(), .neighbours = nullptr});
     isph::info("{}\n", time.executionTimeLine());
   }
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
