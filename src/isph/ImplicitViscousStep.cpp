@@ -1,6 +1,7 @@
 #include "isph/ImplicitViscousStep.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "core/dictionary/Dictionary.hpp"
 #include "isph/WallBoundaryPressure.hpp"
@@ -79,43 +80,40 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   }
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // Coulomb friction by an active set: a particle next to a friction wall either sticks (a
-  // stiff tangential drag, whose reaction is the force needed to hold it) or slides (the
-  // force F_a against its sliding direction). Start from the state at time n; a sticking
-  // particle whose reaction exceeds F_a starts to slide, a sliding one that would reverse
-  // sticks; repeat until no particle changes (a few passes at most).
+  // Coulomb friction as a regularised drag on the tangential velocity (numerics.md §3, the
+  // wall viscosity of the implicit form): particle a next to a friction wall feels
+  //   f_a = −F_a u_t*/(|u_t| + u_slip),
+  // the Coulomb force F_a against its own sliding direction once |u_t| ≫ u_slip, and a stiff
+  // drag that holds it below. The direction comes from the solve itself (it is implicit in
+  // u_t*), so noise in the bed row cannot make neighbours disagree on it; |u_t| starts at
+  // time n and is updated by Picard passes until it settles. A wall that cannot hold the
+  // material lets it go: from rest, |u_t| grows by the ratio of the driving force to F_a per
+  // pass until the Coulomb regime is reached.
   const std::size_t n = static_cast<std::size_t>(nMat);
   std::vector<double> diagonal(n);
   for (std::size_t a = 0; a < n; ++a) diagonal[a] = system_.values[static_cast<std::size_t>(system_.rowStart[a])];
-  std::vector<char> stuck(n, 0);
-  std::vector<Vec3> slideDirection(n, Vec3::Zero());
-  const double stickRate = 1e4 / dt;  // u_t of a sticking particle is its reaction × dt/(10⁴ m)
+  std::vector<double> slip(n, 0.0);  // |u_t| that sets the drag rate
   if (drag) {
     for (std::size_t a = 0; a < n; ++a) {
-      if (friction->capacity(a) <= 0) continue;
-      const Vec3 ut = friction->tangential(a, c.U[a]);
-      stuck[a] = ut.norm() <= friction->slipSpeed();
-      if (!stuck[a]) slideDirection[a] = ut.normalized();
+      if (friction->capacity(a) > 0) slip[a] = friction->tangential(a, c.U[a]).norm();
     }
   }
   std::vector<SolverPerformance> perf;
   std::vector<double> x(n);
   ustar.assign(ps.size(), Vec3::Zero());
   for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * g;  // warm start: the explicit predictor
+  frictionPasses_ = 0;
   for (int pass = 0; pass < maxFrictionPasses; ++pass) {
+    ++frictionPasses_;
     std::vector<Vec3> b = rhs;
     for (std::size_t a = 0; a < n && drag; ++a) {
-      double extra = 0;
+      double rate = 0;
       if (friction->capacity(a) > 0) {
         const Vec3& nrm = friction->normal(a);
-        if (stuck[a]) {
-          extra = c.mass[a] * stickRate;
-          b[a] += extra * (c.U[a] + dt * g).dot(nrm) * nrm;  // the drag acts on u_t only
-        } else {
-          b[a] -= friction->capacity(a) * slideDirection[a];
-        }
+        rate = friction->capacity(a) / (slip[a] + friction->slipSpeed());
+        b[a] += rate * (c.U[a] + dt * g).dot(nrm) * nrm;  // the drag acts on u_t only
       }
-      system_.values[static_cast<std::size_t>(system_.rowStart[a])] = diagonal[a] + extra;
+      system_.values[static_cast<std::size_t>(system_.rowStart[a])] = diagonal[a] + rate;
     }
     perf.clear();
     for (int d = 0; d < dim; ++d) {
@@ -127,20 +125,15 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
     }
     if (!drag) break;
-    std::size_t changed = 0;
+    // Settled when no drag rate would change by more than 1 %.
+    bool settled = true;
     for (std::size_t a = 0; a < n; ++a) {
       if (friction->capacity(a) <= 0) continue;
-      const Vec3 ut = friction->tangential(a, ustar[a]);
-      if (stuck[a] && c.mass[a] * stickRate * ut.norm() > friction->capacity(a)) {
-        stuck[a] = 0;
-        slideDirection[a] = ut.normalized();
-        ++changed;
-      } else if (!stuck[a] && ut.dot(slideDirection[a]) < 0) {
-        stuck[a] = 1;
-        ++changed;
-      }
+      const double s = friction->tangential(a, ustar[a]).norm();
+      if (std::abs(s - slip[a]) > 0.01 * (slip[a] + friction->slipSpeed())) settled = false;
+      slip[a] = s;
     }
-    if (changed == 0) break;
+    if (settled) break;
   }
   return perf;
 }

@@ -75,7 +75,7 @@ IsphSolver::IsphSolver(const Time& time) {
   }
   solution.checkKeywords({"U"});
   if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
-  friction_ = std::make_unique<WallFriction>(ps_, *materials_, schemes_.frictionSlipSpeed);
+  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed);
   ps_.frictionWall.assign(ps_.size(), 0);
   for (std::size_t b = ps_.wallBegin(); b < ps_.size(); ++b) {
     const std::size_t w = ps_.isWall(b) ? b : static_cast<std::size_t>(ps_.parentWall[b]);
@@ -268,7 +268,7 @@ StepReport IsphSolver::step(const Time& time) {
       ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
     }
     if (schemes_.shifting) {
-      report.maxShift = shiftParticles(ps_, *kernel_, correction_, freeSurface_->flags(), schemes_, dt).maxShift;
+      report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_, dt).maxShift;
     }
     const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);
     report.wallSafeguard = guard.moved;

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isph/MaterialGradient.hpp"
+
 namespace isph {
 
-ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
-                              const std::vector<char>& freeSurface, const IsphSchemes& schemes, double dt) {
+ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const std::vector<char>& freeSurface, const IsphSchemes& schemes, double dt) {
   auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const long n = static_cast<long>(ps.nMaterial);
@@ -60,21 +61,25 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const Ke
     largest = std::max(largest, std::min(len, maxShift) / ps.dx);
   }
 
-  // Taylor correction of u and p with the renormalised gradient, then move.
+  // Taylor correction of u and p, then move. The gradients are over material neighbours
+  // only, renormalised with the material moment (MaterialGradient): a wall particle carries
+  // no velocity of the material (u_w = 0 would read as a shear, and with the moment of a cut
+  // support as a spurious ∂u/∂x, which accelerated a block sliding on a Coulomb bed).
   std::vector<Vec3> Unew(c.U.begin(), c.U.begin() + n);
   std::vector<double> pnew(c.p.begin(), c.p.begin() + n);
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
     if (shift[ua].squaredNorm() == 0) continue;
+    const Eigen::Matrix3d Minv = materialMomentInverse(ps, ua, schemes.correctionMinDeterminant);
     Eigen::Matrix3d gradU = Eigen::Matrix3d::Zero();  // (∇u)_ij = ∂u_i/∂x_j
     Vec3 gradP = Vec3::Zero();
     for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
       const auto b = static_cast<std::size_t>(nl.index[kk]);
-      const Vec3 gw = L[ua] * (nl.F[kk] * (c.positions[ua] - c.positions[b]));
-      const Vec3 ub = ps.isMaterial(b) ? c.U[b] : Vec3::Zero();
-      gradU.noalias() += ps.volume[b] * (ub - c.U[ua]) * gw.transpose();
+      if (!ps.isMaterial(b)) continue;
+      const Vec3 gw = Minv.transpose() * (nl.F[kk] * (c.positions[ua] - c.positions[b]));
+      gradU.noalias() += ps.volume[b] * (c.U[b] - c.U[ua]) * gw.transpose();
       gradP += ps.volume[b] * (c.p[b] - c.p[ua]) * gw;
     }
     Unew[ua] += gradU * shift[ua];

@@ -6,8 +6,9 @@
 
 namespace isph {
 
-WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materials, double slipSpeed)
-    : slipSpeed_(slipSpeed) {
+WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity,
+                           double slipSpeed)
+    : slipSpeed_(slipSpeed), gravity_(gravity) {
   for (const auto& patch : ps.cloud.properties.patches) {
     tanDelta_.push_back(std::tan(patch.frictionAngle * std::numbers::pi / 180.0));
   }
@@ -38,12 +39,20 @@ void WallFriction::update(const ParticleSystem& ps) {
     const auto w = static_cast<std::size_t>(iw);
     const double tanDelta = tanDelta_[static_cast<std::size_t>(c.patch[w])];
     if (tanDelta <= 0 || c.p[w] <= 0) continue;
-    double sum = 0;
+    double sum = 0, rhoSum = 0;
     for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
       const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
-      if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])]) sum += nl.W[static_cast<std::size_t>(k)];
+      if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])]) {
+        sum += nl.W[static_cast<std::size_t>(k)];
+        rhoSum += nl.W[static_cast<std::size_t>(k)] * ps.rho[b];
+      }
     }
-    if (sum > 0) share[w] = tanDelta * c.p[w] * area / sum;
+    if (sum <= 0) continue;
+    // σ_w = p_w + the half layer that p = 0 on the free surface leaves out (the material's
+    // weight per area between the surface particles' centres and the real surface).
+    const double pressing = std::max(0.0, -gravity_.dot(c.normal[w]));
+    const double sigma = c.p[w] + 0.5 * (rhoSum / sum) * pressing * ps.dx;
+    share[w] = tanDelta * sigma * area / sum;
   }
 
   const long nMat = static_cast<long>(ps.nMaterial);

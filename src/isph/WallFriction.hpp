@@ -4,11 +4,16 @@
 // coefficient"; numerics.md §3). Each wall particle w of a patch with friction angle δ > 0
 // can carry a tangential force up to
 //
-//   T_w = tan δ · σ_w · A_w,   σ_w = max(p_w, 0) (the wall pressure), A_w = dx^(d−1),
+//   T_w = tan δ · σ_w · A_w,   σ_w = p_w + ½ ρ max(−g·n_w, 0) dx  (where p_w > 0),  A_w = dx^(d−1),
 //
 // shared among its material neighbours c in proportion to W_cw. So material particle a
 // has the friction capacity F_a = Σ_w T_w W_aw / Σ_c W_cw [N, per metre in 2D] along the
 // mean wall normal n_a, and the sum over the material is exactly tan δ × the normal force.
+// The half layer in σ_w is the weight that the free-surface condition leaves out: p = 0 holds
+// at the centres of the surface particles, half a spacing below the real surface, so the wall
+// pressure under a layer of n particles is that of n − ½ (without it a one-particle sheet, all
+// free surface, would press on the bed with half its weight and slide too far; the
+// rigid-plastic model adds the same half layer to its strength).
 //
 // Only materials with WallContact::coulombFriction feel it (a fluid sticks instead); a
 // patch without a friction angle is a free-slip wall for them.
@@ -17,9 +22,9 @@
 // - explicit: the tangential velocity loses dt F_a/m_a, capped so that the step cannot
 //   reverse it (a particle that would reverse sticks);
 // - implicit (inside the semi-implicit viscous solve): a drag K_a u_t with the rate
-//   K_a = F_a / (m_a (|u_t| + u_slip)), |u_t| from the start of the step. While sliding it is
-//   the Coulomb force; below the slip speed u_slip it makes the wall stick, and a wall that
-//   cannot hold the material lets it go (|u_t| grows geometrically until it slides).
+//   K_a = F_a / (|u_t| + u_slip), |u_t| from Picard passes that start at time n. While
+//   sliding it is the Coulomb force; below the slip speed u_slip it makes the wall stick, and
+//   a wall that cannot hold the material lets it go (|u_t| grows geometrically until it slides).
 #include <vector>
 
 #include "core/Types.hpp"
@@ -30,7 +35,7 @@ namespace isph {
 class WallFriction {
  public:
   // Active only if some patch has a friction angle and some material slides on walls.
-  WallFriction(const ParticleSystem& ps, const MaterialTable& materials, double slipSpeed);
+  WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity, double slipSpeed);
 
   bool active() const { return active_; }
   // Some material slides on walls (whether or not any patch has friction).
@@ -52,6 +57,7 @@ class WallFriction {
   bool active_ = false;
   bool anySlides_ = false;
   double slipSpeed_ = 0;
+  Vec3 gravity_ = Vec3::Zero();
   std::vector<double> tanDelta_;   // per patch
   std::vector<char> slides_;       // per material: coulombFriction
   std::vector<double> capacity_;   // F_a

@@ -1,0 +1,55 @@
+// A stiff block sliding down a plane inclined at 30° with Coulomb bed friction δ = 20°
+// (tutorials/validation/slidingBlock, as it is: 5 mm spacing, 200 particles, 1 s): the
+// centre of mass must travel as a rigid block, s = a t²/2 with a = g (sin θ − tan δ cos θ)
+// = 1.8128 m/s² (tutorials/validation/slidingBlock/validation/, elementary mechanics), the
+// acceleration fitted over the ten written times within 3 %, with no wall crossing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "CaseRunner.hpp"
+#include "particles/CloudIO.hpp"
+
+namespace {
+
+using isph::test::CaseRunner;
+using namespace isph;
+
+double meanMaterialX(const ParticleCloud& cloud) {
+  double sum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.kind[i] != 0) continue;
+    sum += cloud.positions[i].x();
+    ++n;
+  }
+  return sum / n;
+}
+
+TEST(SlidingBlock, CentreOfMassAcceleratesAsACoulombBlock) {
+  const double theta = 30 * M_PI / 180, delta = 20 * M_PI / 180, g = 9.81;
+  const double exact = g * (std::sin(theta) - std::tan(delta) * std::cos(theta));
+  CaseRunner c("slidingBlock", "slidingBlock");
+  ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
+  EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+
+  const double x0 = meanMaterialX(readCloud(c.path() / "0", "particles"));
+  double num = 0, den = 0;
+  for (int k = 1; k <= 10; ++k) {
+    const double t = 0.1 * k;
+    std::ostringstream name;
+    name << t;
+    const double s = meanMaterialX(readCloud(c.path() / name.str(), "particles")) - x0;
+    const double tau = 0.5 * t * t;
+    num += s * tau;
+    den += tau * tau;
+    std::printf("t %.1f  travel %.4f m  rigid block %.4f m\n", t, s, exact * tau);
+  }
+  const double fitted = num / den;
+  std::printf("acceleration %.4f m/s^2, Coulomb block %.4f m/s^2 (%+.2f%%)\n", fitted, exact,
+              100 * (fitted / exact - 1));
+  EXPECT_NEAR(fitted / exact, 1.0, 0.03) << "centre-of-mass acceleration against g (sin theta - tan delta cos theta)";
+}
+
+}  // namespace
