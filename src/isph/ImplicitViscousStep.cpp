@@ -102,9 +102,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   std::vector<double> x(n);
   ustar.assign(ps.size(), Vec3::Zero());
   for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * g;  // warm start: the explicit predictor
-  frictionPasses_ = 0;
   for (int pass = 0; pass < maxFrictionPasses; ++pass) {
-    ++frictionPasses_;
     std::vector<Vec3> b = rhs;
     for (std::size_t a = 0; a < n && drag; ++a) {
       double rate = 0;

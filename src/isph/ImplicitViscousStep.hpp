@@ -39,15 +39,12 @@ class ImplicitViscousStep {
                                        double dt, double h, std::vector<Vec3>& ustar);
 
   double assemblySeconds() const { return assemblySeconds_; }
-  // Picard passes of the last solve (1 without wall friction).
-  int frictionPasses() const { return frictionPasses_; }
   static constexpr int maxFrictionPasses = 4;
 
  private:
   std::vector<std::unique_ptr<LinearSolver>> solvers_;
   SparseSystem system_;
   double assemblySeconds_ = 0;
-  int frictionPasses_ = 0;
 };
 
 }  // namespace isph
