@@ -48,6 +48,8 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
     s.alpha = src.getOrDefault("alpha", s.alpha);
     requireRange(src, "alpha", s.alpha, 0.0, 1.0);
   }
+  s.boundaryRelaxation = src.getOrDefault("relaxation", s.boundaryRelaxation);
+  requireRange(src, "relaxation", s.boundaryRelaxation, 0.0, 1.0);
   src.checkKeywords({"alpha"});
 
   const Dictionary fs = d.subDictOrEmpty("freeSurface");
@@ -57,6 +59,10 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   requireRange(fs, "gradientThreshold", s.freeSurfaceGradient, 0.0, 10.0);
   s.minNeighbourFraction = fs.getOrDefault("minNeighbourFraction", s.minNeighbourFraction);
   requireRange(fs, "minNeighbourFraction", s.minNeighbourFraction, 0.0, 1.0);
+  const std::string compressed = fs.getChoiceOrDefault("compressed", {"granular", "none", "all"}, "granular");
+  s.compressedSurface = compressed == "none" ? CompressedSurface::none
+                        : compressed == "all" ? CompressedSurface::all
+                                              : CompressedSurface::granular;
   fs.checkKeywords();
 
   s.tensionCutoff = d.getOrDefault("tensionCutoff", s.tensionCutoff);
@@ -79,6 +85,11 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   s.maxGrowth = ts.getOrDefault("maxGrowth", s.maxGrowth);
   requireRange(ts, "maxGrowth", s.maxGrowth, 1.0, 10.0);
   ts.checkKeywords();
+
+  const Dictionary col = d.subDictOrEmpty("collision");
+  s.collisionDistance = col.getOrDefault("distance", s.collisionDistance);
+  requireRange(col, "distance", s.collisionDistance, 0.0, 1.0);
+  col.checkKeywords();
 
   const Dictionary ws = d.subDictOrEmpty("wallSafeguard");
   s.wallSafeguardDistance = ws.getOrDefault("distance", s.wallSafeguardDistance);
@@ -107,10 +118,17 @@ std::string IsphSchemes::describe() const {
                      laplacianCorrection ? ", first-order correction where the support is cut" : "",
                      toString(source));
   if (source == PpeSource::mixed) out += fmt::format(" (alpha {})", alpha);
-  out += "\n";
+  out += fmt::format("; next to the free surface and walls {} of the compression beyond the lattice density "
+                     "undone per step\n",
+                     boundaryRelaxation);
   out += fmt::format("    free surface: div r < {}, or |grad C| h > {}, or fewer than {:.0f}% of a full "
                      "neighbourhood\n",
                      freeSurfaceThreshold, freeSurfaceGradient, 100 * minNeighbourFraction);
+  out += fmt::format("    compressed free-surface particles (kernel sum above the lattice's, away from walls): {}\n",
+                     compressedSurface == CompressedSurface::none ? "held at p = 0"
+                     : compressedSurface == CompressedSurface::all
+                         ? "unknowns of the PPE"
+                         : "unknowns of the PPE in granular materials, p = 0 in fluids");
   out += fmt::format("    tension cut-off: {}\n", tensionCutoff ? "on, p >= 0 after the PPE solve" : "off");
   if (shifting) {
     out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx, normal part removed "
@@ -119,6 +137,10 @@ std::string IsphSchemes::describe() const {
   } else {
     out += "    particle shifting: off\n";
   }
+  out += collisionDistance > 0
+             ? fmt::format("    minimum distance: material pairs closer than {} dx separated as inelastic contacts\n",
+                           collisionDistance)
+             : std::string("    minimum distance: off\n");
   out += fmt::format("    time step: force factor {}, viscous factor {}, growth <= {}x per step\n", forceFactor,
                      viscousFactor, maxGrowth);
   out += fmt::format("    deviatoric term (where a material has one): {}\n",

@@ -7,12 +7,18 @@
 //   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
 //   laplacian        { eta 0.1; correction on; }  // Shao & Lo Laplacian (Eq. 10), η = eta·h;
 //                    correction: consistent for linear fields where the support is cut
-//   source           { type densityInvariant; alpha 0.05; }  // | divergence | mixed
-//   freeSurface      { threshold 1.5; gradientThreshold 0.05; minNeighbourFraction 0.5; }
+//   source           { type densityInvariant; alpha 0.05; relaxation 0.1; }  // | divergence | mixed
+//                    relaxation: share of the compression beyond the lattice density undone per
+//                    step where the support reaches the free surface or a wall (see the PPE)
+//   freeSurface      { threshold 1.5; gradientThreshold 0.05; minNeighbourFraction 0.5;
+//                      compressed granular; }  // | none | all: flagged particles that are
+//                    compressed stay unknowns of the PPE (for granular materials by default)
 //   tensionCutoff    on;             // p ← max(p, 0) after the solve (no tension)
 //   shifting         { enabled on; coefficient 2; maxShift 0.2; }   // Lind et al. (2012)
 //   timeStep         { forceFactor 0.25; viscousFactor 0.125; maxGrowth 1.1; }
 //   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
+//   collision        { distance 0.5; }   // in dx: material pairs closer than this are
+//                                    // separated as inelastic contacts (0: off)
 //   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6 (only when a
 //                                    // material has one): semi-implicit solve or explicit sum
 //   wallFriction     { slipSpeed 1e-5; }  // m/s; Coulomb walls stick below it (default
@@ -25,6 +31,7 @@ namespace isph {
 
 enum class PpeSource { densityInvariant, divergence, mixed };
 enum class ViscousTerm { implicit, explicit_ };
+enum class CompressedSurface { none, granular, all };
 
 struct IsphSchemes {
   std::string kernel = "WendlandC2";
@@ -37,10 +44,12 @@ struct IsphSchemes {
 
   PpeSource source = PpeSource::densityInvariant;
   double alpha = 0.05;  // weight of the density term in the mixed source
+  double boundaryRelaxation = 0.1;  // compression undone per step next to the surface and walls
 
   double freeSurfaceThreshold = 1.5;         // ∇·r below this flags the free surface
   double freeSurfaceGradient = 0.05;         // |∇C| h above this makes a candidate for the scan
   double minNeighbourFraction = 0.5;         // fewer neighbours than this share of a full lattice: surface
+  CompressedSurface compressedSurface = CompressedSurface::granular;
 
   bool tensionCutoff = true;  // p ← max(p, 0) after the PPE solve
 
@@ -53,6 +62,7 @@ struct IsphSchemes {
   double maxGrowth = 1.1;        // dt may grow by at most this factor per step
 
   double wallSafeguardDistance = 0.5;  // in dx
+  double collisionDistance = 0.5;      // in dx; 0: off
 
   ViscousTerm viscousTerm = ViscousTerm::implicit;
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver

@@ -15,6 +15,7 @@
 #include "isph/MaterialGradient.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 #include "isph/IntermediateVelocity.hpp"
+#include "isph/ParticleCollision.hpp"
 #include "isph/ParticleShifting.hpp"
 #include "isph/VelocityCorrection.hpp"
 #include "isph/WallPenetrationGuard.hpp"
@@ -69,7 +70,14 @@ IsphSolver::IsphSolver(const Time& time) {
 
   info("\nReading system/isphSolution");
   const Dictionary solution = readOptional(caseDir / "system" / "isphSolution", "system/isphSolution");
-  ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"));
+  std::vector<char> keepCompressed(materials_->size(), 0);
+  for (std::size_t i = 0; i < materials_->size(); ++i) {
+    keepCompressed[i] = schemes_.compressedSurface == CompressedSurface::all ||
+                        (schemes_.compressedSurface == CompressedSurface::granular &&
+                         (*materials_)[i].wallContact() == WallContact::coulombFriction);
+  }
+  ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
+                                                   std::move(keepCompressed));
   if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
     viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), dim);
   }
@@ -270,6 +278,7 @@ StepReport IsphSolver::step(const Time& time) {
     if (schemes_.shifting) {
       report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_, dt).maxShift;
     }
+    report.collisions = separateCloseParticles(ps_, schemes_.collisionDistance).moved;
     const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);
     report.wallSafeguard = guard.moved;
     report.wallCrossings = guard.crossed;

@@ -25,6 +25,7 @@ struct StepReport {
   std::vector<SolverPerformance> viscous;  // the implicit deviatoric term, one per component
   SolverPerformance ppe;
   std::size_t freeSurface = 0;
+  std::size_t collisions = 0;  // material particles separated from a too-close neighbour
   std::size_t wallSafeguard = 0;
   std::size_t wallCrossings = 0;  // this step
   double maxShift = 0;  // in dx

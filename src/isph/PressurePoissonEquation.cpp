@@ -10,8 +10,9 @@
 
 namespace isph {
 
-PressurePoissonEquation::PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver)
-    : schemes_(schemes), solver_(std::move(solver)) {}
+PressurePoissonEquation::PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver,
+                                                 std::vector<char> keepCompressed)
+    : schemes_(schemes), solver_(std::move(solver)), keepCompressed_(std::move(keepCompressed)) {}
 
 namespace {
 
@@ -58,6 +59,24 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   const auto& nl = ps.neighbours;
   const std::size_t nMat = ps.nMaterial;
   std::vector<char> flags(freeSurfaceIn.begin(), freeSurfaceIn.begin() + static_cast<long>(nMat));
+  // A flagged particle that is compressed (its kernel sum above the full lattice's) away from
+  // walls is no opening to the outside but a clump at the surface: it stays an unknown, so
+  // that its own pressure pushes the clump apart (with p = 0 held there, nothing would).
+  const double W0 = kernel.W(0.0);
+  const double halfDx = 0.5 * ps.dx;
+  const double relaxation = schemes_.boundaryRelaxation;
+  for (std::size_t a = 0; a < nMat; ++a) {
+    const auto m = static_cast<std::size_t>(c.material[a]);
+    if (!flags[a] || m >= keepCompressed_.size() || !keepCompressed_[m]) continue;
+    double theta = ps.volume[a] * W0;
+    bool wall = false;
+    for (long k = nl.start[a]; k < nl.start[a + 1] && !wall; ++k) {
+      const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+      wall = !ps.isMaterial(b);
+      theta += ps.volume[b] * nl.W[static_cast<std::size_t>(k)];
+    }
+    if (!wall && theta > ps.latticeSum) flags[a] = 0;
+  }
 
   for (int pass = 0; pass < 2; ++pass) {
     rowOf_.assign(ps.size(), -1);
@@ -103,7 +122,6 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
 
   const double h = kernel.h();
   const double eta2 = schemes_.laplacianEta * schemes_.laplacianEta * h * h;
-  const double W0 = kernel.W(0.0);
   const double theta0 = ps.latticeSum;
   const PpeSource type = schemes_.source;
   const bool consistent = schemes_.laplacianCorrection;
@@ -120,6 +138,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     double diagonal = 0, rhsWall = 0;
     double thetaN = ps.volume[a] * W0, thetaStar = thetaN, divergence = 0;
     bool nearBoundary = false;
+    double thetaLattice = ps.volume[a] * W0;  // θⁿ with the wall layers moved onto the lattice
     // First-order correction (consistent Laplacian): d_a = Σ_b 2 V_b F_ab r²/(r²+η²) x_ab
     // vanishes in a full support; where the support is cut, the row gains −(m_a/ρ_a) d_a·∇p_a
     // with the renormalised gradient, so a linear pressure field has a zero Laplacian.
@@ -158,6 +177,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
       const double C = ma * mb * 8.0 / (rhoSum * rhoSum) * nl.F[kk] * r2 / (r2 + eta2)  // ≤ 0, Eq. 10
                        + ps.volume[b] * nl.F[kk] * Ld.dot(xab);                     // correction
       thetaN += ps.volume[b] * nl.W[kk];
+      if (ps.isMaterial(b)) thetaLattice += ps.volume[b] * nl.W[kk];
       if (ps.isMaterial(b)) {
         diagonal -= C;
         const int rb = rowOf_[b];
@@ -173,12 +193,20 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
         // Wall or dummy: p_b = p_a + δ_ab (WallBoundaryPressure); C_ab (p_a − p_b) = −C_ab δ_ab.
         rhsWall += C * wallPressureIncrement(ps, ustar, g, a, b, dt);
         nearBoundary = true;
+        thetaLattice += ps.volume[b] * kernel.W((xab + halfDx * wallNormal(ps, b)).norm());
         thetaStar += ps.volume[b] * nl.W[kk];  // the wall moves with a: no relative motion
       }
     }
     system_.columns[diag] = static_cast<long>(r);
     system_.values[diag] = diagonal;
-    const double thetaRef = nearBoundary ? thetaN : theta0;
+    // The reference of the density-invariant source: the full-lattice sum θ₀ inside. Where
+    // the support reaches the free surface or a wall, the present sum θⁿ (a cut support must
+    // not be pulled in, and the wall layers sit half a spacing off the lattice), less a tenth
+    // per step of any compression beyond the lattice density, measured with the wall layers
+    // moved half a spacing back onto the lattice (θ_lattice = θ₀ for material at rest on a
+    // flat wall). Without that, compaction next to p = 0 and walls is never undone: a
+    // granular deposit lost a third of its volume and clumped.
+    const double thetaRef = nearBoundary ? thetaN - relaxation * std::max(thetaLattice - 1.01 * theta0, 0.0) : theta0;
     double source = 0;
     switch (type) {
       case PpeSource::densityInvariant: source = (thetaRef - thetaStar) / (thetaRef * dt * dt); break;

@@ -35,9 +35,9 @@ void run(const isph::ArgList& args) {
     const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step
     for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
     isph::logSolverPerformance(report.ppe);
-    isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  wall safeguard {}  "
+    isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  collisions {}  wall safeguard {}  "
                "wall crossings {}",
-               report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.wallSafeguard,
+               report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.collisions, report.wallSafeguard,
                report.wallCrossings);
     if (time.writeTime()) {
       solver.write(time);
