@@ -84,6 +84,10 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
     }
     Unew[ua] += gradU * shift[ua];
     pnew[ua] += gradP.dot(shift[ua]);
+    // The tension cut-off holds after the shift too: next to a pressure spike the Taylor term
+    // alone gave p = −54 kPa (20× the column's lithostatic pressure) and the lagged pressure
+    // gradient of the wall friction then blew the 2 mm column collapse up.
+    if (schemes.tensionCutoff) pnew[ua] = std::max(pnew[ua], 0.0);
   }
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
