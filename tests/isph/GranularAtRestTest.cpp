@@ -6,7 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "CaseRunner.hpp"
 #include "particles/CloudIO.hpp"
@@ -56,6 +61,79 @@ TEST(GranularAtRest, StaysOnItsSlopeWithLithostaticPressureForTwoSeconds) {
   EXPECT_LT(maxDisplacement, 0.25 * dx) << "the layer crept";
   EXPECT_LT(l2, 0.02) << "L2 error of p against rho |g| cos(beta) depth";
   EXPECT_LT(maxDev - minDev, 0.01) << "spread of (p - lithostatic)/(rho g H) in the interior";
+}
+
+// Text of `file` with `from` replaced by `to` (which must occur).
+void replaceIn(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+  std::string text = isph::test::readText(file);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not found in " << file;
+  text.replace(at, from.size(), to);
+  std::ofstream(file) << text;
+}
+
+// Two soils in one scene: a weaker basal layer (phi 25) under a stronger mass (phi 35), each
+// 0.05 m thick, on the same 20 degree slope (both below yield: tan 20 = 0.364 < sin 25 =
+// 0.423). Across their contact the pair viscosity is eta_a + eta_b (each from its own phi, p
+// and strain rate) and the PPE weights pairs by 8/(rho_a + rho_b)^2 (Eq. 10), so the pressure
+// must be the layered lithostatic one, p = g cos(beta) [rho_up (H - max(y, y_c)) + rho_low
+// max(y_c - y, 0)], within 2 % (L2), and nothing may move more than dx/4 in 2 s.
+void runTwoLayers(const std::string& name, double rhoLow, double rhoUp) {
+  const double dx = 0.01, g = 9.81, beta = 20 * M_PI / 180, yc = 0.05;
+  CaseRunner c("granularAtRest", name);
+  c.set("system/particleMeshDict", "spacing", std::to_string(dx));
+  c.set("system/controlDict", "writeInterval", "1");
+  ASSERT_NO_FATAL_FAILURE(replaceIn(c.path() / "system/particleMeshDict",
+                                    "sand { type box; min (0 0 0); max (0.6 0.1 0); material sand; }",
+                                    "basal { type box; min (0 0 0); max (0.6 0.05 0); material weak; }\n"
+                                    "    mass  { type box; min (0 0.05 0); max (0.6 0.1 0); material strong; }"));
+  ASSERT_NO_FATAL_FAILURE(replaceIn(c.path() / "constant/materialProperties",
+                                    "sand { model rigidPlastic; rho 1800; phi 30; }",
+                                    fmt::format("weak   {{ model rigidPlastic; rho {}; phi 25; }}\n"
+                                                "    strong {{ model rigidPlastic; rho {}; phi 35; }}",
+                                                rhoLow, rhoUp)));
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0) << "see " << c.path() / "log.particleMesh";
+  ASSERT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << c.path() / "log.isphLandslideFoam";
+  EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+
+  const ParticleCloud start = readCloud(c.path() / "0", "particles");
+  const ParticleCloud end = readCloud(c.path() / "2", "particles");
+  std::map<label, Vec3> initial;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (start.kind[i] == 0) initial[start.origId[i]] = start.positions[i];
+  }
+  double ySurface = 0, maxDisplacement = 0;
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    if (end.kind[i] != 0) continue;
+    ySurface = std::max(ySurface, end.positions[i].y());
+    maxDisplacement = std::max(maxDisplacement, (end.positions[i] - initial.at(end.origId[i])).norm());
+  }
+  double sumError2 = 0, sumExact2 = 0;
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    if (end.kind[i] != 0) continue;
+    const double y = end.positions[i].y();
+    const double exact = g * std::cos(beta) * (rhoUp * (ySurface - std::max(y, yc)) + rhoLow * std::max(yc - y, 0.0));
+    sumError2 += (end.p[i] - exact) * (end.p[i] - exact);
+    sumExact2 += exact * exact;
+  }
+  const double l2 = std::sqrt(sumError2 / sumExact2);
+  std::printf("two layers (rho %g under %g): max displacement %.3g mm (dx/4 = %.3g mm), L2 error of p against the layered "
+              "lithostatic pressure %.3g%%\n",
+              rhoLow, rhoUp, 1e3 * maxDisplacement, 250 * dx, 100 * l2);
+  EXPECT_LT(maxDisplacement, 0.25 * dx) << "the layers crept";
+  EXPECT_LT(l2, 0.02) << "L2 error of p against the layered lithostatic pressure";
+}
+
+TEST(GranularAtRest, AWeakBasalLayerUnderAStrongerMassStaysAtRestWithItsLithostaticPressure) {
+  runTwoLayers("granularAtRestTwoSoils", 1800, 1800);
+}
+
+// DISABLED until it passes (issue 5): with a density contrast across the contact (2000 under
+// 1600) the layers creep (12 mm in 2 s, L2 error of p 14 %; with equal densities they stay).
+// The PPE's pair density 8/(rho_a + rho_b)^2 and Eq. 11's 1/rho_a are not consistent across
+// the contact, so the layered hydrostatic state is not a discrete equilibrium.
+TEST(GranularAtRest, DISABLED_TwoLayersOfDifferentDensityStayAtRestWithTheLayeredLithostaticPressure) {
+  runTwoLayers("granularAtRestTwoDensities", 2000, 1600);
 }
 
 }  // namespace
