@@ -11,6 +11,7 @@ namespace isph {
 ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimension) {
   static const char* names[] = {"Ux", "Uy", "Uz"};
   for (int d = 0; d < dimension; ++d) solvers_.push_back(makeLinearSolver(solverDict, names[d]));
+  coupledSolver_ = makeLinearSolver(solverDict, "U");
 }
 
 ImplicitViscousStep::~ImplicitViscousStep() = default;
@@ -18,7 +19,8 @@ ImplicitViscousStep::~ImplicitViscousStep() = default;
 std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& ps, const MaterialTable& materials,
                                                           const std::vector<double>& eta,
                                                           const WallFriction* friction, const Vec3& g, double dt,
-                                                          double h, std::vector<Vec3>& ustar) {
+                                                          double h, const std::vector<Vec3>& lagged,
+                                                          std::vector<Vec3>& ustar) {
   const auto start = std::chrono::steady_clock::now();
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
@@ -44,6 +46,8 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
 
   const int dim = ps.dimension;
   std::vector<Vec3> rhs(static_cast<std::size_t>(nMat));
+  // The body force per unit mass of each row: gravity and the lagged pressure force, if any.
+  auto force = [&](std::size_t a) -> Vec3 { return lagged.empty() ? g : Vec3(g + lagged[a]); };
 #pragma omp parallel for schedule(static)
   for (long ia = 0; ia < nMat; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
@@ -51,7 +55,8 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
     const bool withWalls = materials[static_cast<std::size_t>(c.material[a])].wallContact() == WallContact::noSlip;
     auto pos = static_cast<std::size_t>(system_.rowStart[a]);
     const std::size_t diag = pos++;
-    Vec3 r = ma * (c.U[a] / dt + g);
+    const Vec3 fa = force(a);
+    Vec3 r = ma * (c.U[a] / dt + fa);
     double diagonal = ma / dt;
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
@@ -71,7 +76,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
         // The wall as the no-slip term sees it: at rest along the wall, and moving with a in
         // its normal direction and with the gravity increment, both the PPE's to resolve.
         const Vec3& n = wallNormal(ps, b);
-        r += kappa * (dt * g + c.U[a].dot(n) * n);
+        r += kappa * (dt * fa + c.U[a].dot(n) * n);
       }
     }
     system_.columns[diag] = static_cast<long>(a);
@@ -101,39 +106,84 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   std::vector<SolverPerformance> perf;
   std::vector<double> x(n);
   ustar.assign(ps.size(), Vec3::Zero());
-  for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * g;  // warm start: the explicit predictor
-  for (int pass = 0; pass < maxFrictionPasses; ++pass) {
-    std::vector<Vec3> b = rhs;
-    for (std::size_t a = 0; a < n && drag; ++a) {
-      double rate = 0;
-      if (friction->capacity(a) > 0) {
-        const Vec3& nrm = friction->normal(a);
-        rate = friction->capacity(a) / (slip[a] + friction->slipSpeed());
-        b[a] += rate * (c.U[a] + dt * g).dot(nrm) * nrm;  // the drag acts on u_t only
-      }
-      system_.values[static_cast<std::size_t>(system_.rowStart[a])] = diagonal[a] + rate;
-    }
-    perf.clear();
-    for (int d = 0; d < dim; ++d) {
+  for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * force(a);  // warm start: the explicit predictor
+  if (drag) {
+    // The drag acts on the tangential velocity only: K_a (I − n_a n_aᵀ) couples the components
+    // of a particle, so the components are solved together (one system of dim × N unknowns,
+    // interleaved), exactly: an isotropic drag with the normal part moved to the right-hand
+    // side would push the material off the wall, or hold it there, by K_a (ũ_n − u*_n).
+    for (int pass = 0; pass < maxFrictionPasses; ++pass) {
+      std::vector<double> rate(n, 0.0);
       for (std::size_t a = 0; a < n; ++a) {
-        system_.rhs[a] = b[a][d];
-        x[a] = ustar[a][d];
+        if (friction->capacity(a) > 0) rate[a] = friction->capacity(a) / (slip[a] + friction->slipSpeed());
       }
-      perf.push_back(solvers_[static_cast<std::size_t>(d)]->solve(system_, x));
-      for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
+      assembleCoupled(ps.dimension, rate, *friction, rhs);
+      std::vector<double> xv(n * static_cast<std::size_t>(dim));
+      for (std::size_t a = 0; a < n; ++a) {
+        for (int d = 0; d < dim; ++d) xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] = ustar[a][d];
+      }
+      perf.assign(1, coupledSolver_->solve(coupled_, xv));
+      for (std::size_t a = 0; a < n; ++a) {
+        for (int d = 0; d < dim; ++d) ustar[a][d] = xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)];
+      }
+      // Settled when no drag rate would change by more than 1 %.
+      bool settled = true;
+      for (std::size_t a = 0; a < n; ++a) {
+        if (friction->capacity(a) <= 0) continue;
+        const double sl = friction->tangential(a, ustar[a]).norm();
+        if (std::abs(sl - slip[a]) > 0.01 * (slip[a] + friction->slipSpeed())) settled = false;
+        slip[a] = sl;
+      }
+      if (settled) break;
     }
-    if (!drag) break;
-    // Settled when no drag rate would change by more than 1 %.
-    bool settled = true;
+    return perf;
+  }
+  perf.clear();
+  for (int d = 0; d < dim; ++d) {
     for (std::size_t a = 0; a < n; ++a) {
-      if (friction->capacity(a) <= 0) continue;
-      const double s = friction->tangential(a, ustar[a]).norm();
-      if (std::abs(s - slip[a]) > 0.01 * (slip[a] + friction->slipSpeed())) settled = false;
-      slip[a] = s;
+      system_.rhs[a] = rhs[a][d];
+      x[a] = ustar[a][d];
     }
-    if (settled) break;
+    perf.push_back(solvers_[static_cast<std::size_t>(d)]->solve(system_, x));
+    for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
   }
   return perf;
+}
+
+void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<double>& rate, const WallFriction& friction,
+                                          const std::vector<Vec3>& rhs) {
+  const std::size_t n = rate.size();
+  const auto D = static_cast<std::size_t>(dim);
+  coupled_.firstRow = 0;
+  coupled_.symmetricHint = true;
+  coupled_.rowStart.assign(n * D + 1, 0);
+  coupled_.columns.clear();
+  coupled_.values.clear();
+  coupled_.rhs.assign(n * D, 0.0);
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto begin = static_cast<std::size_t>(system_.rowStart[a]);
+    const auto end = static_cast<std::size_t>(system_.rowStart[a + 1]);
+    const Vec3& nrm = friction.normal(a);
+    for (std::size_t d = 0; d < D; ++d) {
+      const std::size_t row = a * D + d;
+      // The particle's own block: the scalar diagonal plus K_a (I − n nᵀ).
+      coupled_.columns.push_back(static_cast<long>(row));
+      coupled_.values.push_back(system_.values[begin] + rate[a] * (1.0 - nrm[static_cast<long>(d)] * nrm[static_cast<long>(d)]));
+      if (rate[a] > 0) {
+        for (std::size_t e = 0; e < D; ++e) {
+          if (e == d) continue;
+          coupled_.columns.push_back(static_cast<long>(a * D + e));
+          coupled_.values.push_back(-rate[a] * nrm[static_cast<long>(d)] * nrm[static_cast<long>(e)]);
+        }
+      }
+      for (std::size_t k = begin + 1; k < end; ++k) {  // the material neighbours, same component
+        coupled_.columns.push_back(system_.columns[k] * static_cast<long>(D) + static_cast<long>(d));
+        coupled_.values.push_back(system_.values[k]);
+      }
+      coupled_.rhs[row] = rhs[a][static_cast<long>(d)];
+      coupled_.rowStart[row + 1] = static_cast<long>(coupled_.columns.size());
+    }
+  }
 }
 
 }  // namespace isph

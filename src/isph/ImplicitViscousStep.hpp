@@ -12,11 +12,14 @@
 // leaves the wall-normal motion and the gravity increment to the PPE, as the explicit form
 // does (a fluid at rest stays exactly at rest). For granular
 // material the walls enter instead through the Coulomb drag K_a of WallFriction, which acts
-// on the tangential velocity only: its normal part is put back on the right with the
-// explicit predictor ũ = uⁿ + dt g, so the drag leaves the wall-normal motion to the
-// pressure. The time step is then free of the viscous limit ρh²/η: a zone below yield, where
+// on the tangential velocity only, K_a (I − n_a n_aᵀ): it couples the components of a
+// particle, so where a drag acts the components are solved together (one SPD system of
+// dim × N unknowns, interleaved; `U { ... }`) and the wall-normal motion is left to the
+// pressure exactly. The time step is then free of the viscous limit ρh²/η: a zone below yield, where
 // η reaches etaMax, moves as a rigid body instead of jittering (numerics.md §4).
 // The cross term ∇·(η ∇uᵀ), non-zero where η varies, is neglected (as in Morris's form).
+// With a lagged body force f (the incremental projection), g becomes g + f throughout: in
+// the right-hand side, the walls' increment and the explicit predictor.
 #include <array>
 #include <memory>
 #include <vector>
@@ -34,16 +37,25 @@ class ImplicitViscousStep {
   ~ImplicitViscousStep();
 
   // u* for the material particles (walls and dummies: 0); one performance per component.
+  // lagged: a further body force per unit mass for each material particle (−∇pⁿ/ρ of the
+  // incremental projection, see IsphSolver), or empty.
   std::vector<SolverPerformance> solve(const ParticleSystem& ps, const MaterialTable& materials,
                                        const std::vector<double>& eta, const WallFriction* friction, const Vec3& g,
-                                       double dt, double h, std::vector<Vec3>& ustar);
+                                       double dt, double h, const std::vector<Vec3>& lagged,
+                                       std::vector<Vec3>& ustar);
 
   double assemblySeconds() const { return assemblySeconds_; }
   static constexpr int maxFrictionPasses = 4;
 
  private:
+  // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
+  void assembleCoupled(int dim, const std::vector<double>& rate, const WallFriction& friction,
+                       const std::vector<Vec3>& rhs);
+
   std::vector<std::unique_ptr<LinearSolver>> solvers_;
+  std::unique_ptr<LinearSolver> coupledSolver_;
   SparseSystem system_;
+  SparseSystem coupled_;
   double assemblySeconds_ = 0;
 };
 

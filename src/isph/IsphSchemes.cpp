@@ -99,6 +99,11 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, "implicit") == "explicit"
                       ? ViscousTerm::explicit_
                       : ViscousTerm::implicit;
+  const std::string incremental = d.getChoiceOrDefault("incrementalPressure", {"none", "granular", "all"}, "none");
+  s.incrementalPressure = incremental == "none" ? MaterialScope::none
+                          : incremental == "all" ? MaterialScope::all
+                                                 : MaterialScope::granular;
+
   const Dictionary wf = d.subDictOrEmpty("wallFriction");
   if (wf.found("slipSpeed")) {
     s.frictionSlipSpeed = wf.get<double>("slipSpeed");
@@ -147,6 +152,15 @@ std::string IsphSchemes::describe() const {
                      viscousTerm == ViscousTerm::implicit
                          ? "semi-implicit (Morris operator, one PCG solve per component; no viscous time-step limit)"
                          : "explicit (Morris operator; viscous time-step limit)");
+  if (viscousTerm == ViscousTerm::implicit) {
+    out += fmt::format("    pressure in the viscous solve: {}\n",
+                       incrementalPressure == MaterialScope::none
+                           ? "none (Eq. 11 corrects with the whole pressure)"
+                           : std::string("incremental projection (a second viscous solve sees the last pressure "
+                                         "force; a second PPE corrects it with the increment)") +
+                                 (incrementalPressure == MaterialScope::granular ? " in scenes with a granular material"
+                                                                                 : ""));
+  }
   return out;
 }
 

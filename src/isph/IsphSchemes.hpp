@@ -21,6 +21,10 @@
 //                                    // separated as inelastic contacts (0: off)
 //   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6 (only when a
 //                                    // material has one): semi-implicit solve or explicit sum
+//   incrementalPressure granular;    // | all | none: with the implicit term, the viscous
+//                                    // solve sees the pressure force of the last step and
+//                                    // Eq. 11 corrects with the change (IsphSolver.hpp); by
+//                                    // default in scenes with a granular material
 //   wallFriction     { slipSpeed 1e-5; }  // m/s; Coulomb walls stick below it (default
 //                                    // 1e-4 sqrt(|g| dx))
 #include <string>
@@ -32,6 +36,7 @@ namespace isph {
 enum class PpeSource { densityInvariant, divergence, mixed };
 enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
+enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
 
 struct IsphSchemes {
   std::string kernel = "WendlandC2";
@@ -65,6 +70,7 @@ struct IsphSchemes {
   double collisionDistance = 0.5;      // in dx; 0: off
 
   ViscousTerm viscousTerm = ViscousTerm::implicit;
+  MaterialScope incrementalPressure = MaterialScope::none;
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
 
   static IsphSchemes read(const Dictionary& dict, int dimension);

@@ -80,6 +80,12 @@ IsphSolver::IsphSolver(const Time& time) {
                                                    std::move(keepCompressed));
   if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
     viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), dim);
+    bool granular = false;
+    for (std::size_t i = 0; i < materials_->size(); ++i) {
+      granular = granular || (*materials_)[i].wallContact() == WallContact::coulombFriction;
+    }
+    incremental_ = schemes_.incrementalPressure == MaterialScope::all ||
+                   (schemes_.incrementalPressure == MaterialScope::granular && granular);
   }
   solution.checkKeywords({"U"});
   if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
@@ -90,6 +96,10 @@ IsphSolver::IsphSolver(const Time& time) {
     const label patch = ps_.cloud.patch[w];
     ps_.frictionWall[b] = patch >= 0 && ps_.cloud.properties.patches[static_cast<std::size_t>(patch)].frictionAngle > 0;
   }
+  // A case from particleMesh has no wall pressures yet (a restart has them): its first step
+  // is a plain projection, whose pressure the incremental projection then carries on.
+  freshStart_ = std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
+                            [](double v) { return v == 0.0; });
   initialiseWallPressure();
 
   freeSurface_ = std::make_unique<FreeSurfaceDetector>(
@@ -195,10 +205,27 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
   {
     auto t = timer_.scope("rheology");
     updateRheology();
-    friction_->update(ps_);
+    // The incremental projection (see the header): the viscous solve sees the pressure force
+    // of the last step, −∇pⁿ/ρ (the walls' condition of a material at rest, ũ = uⁿ + dt g).
+    lagged_.clear();
+    std::vector<Vec3> reaction;
+    if (incrementalNow()) {
+      lagged_.resize(ps_.nMaterial);
+      reaction.assign(ps_.nMaterial, Vec3::Zero());
+      std::vector<Vec3> resting(ps_.cloud.U);
+      for (std::size_t a = 0; a < ps_.nMaterial; ++a) resting[a] += dt * g_;
+      const long n = static_cast<long>(ps_.nMaterial);
+#pragma omp parallel for schedule(static)
+      for (long ia = 0; ia < n; ++ia) {
+        const auto a = static_cast<std::size_t>(ia);
+        lagged_[a] = laggedPressureForce(ps_, *kernel_, resting, g_, a, dt, &reaction[a]);
+      }
+    }
+    friction_->update(ps_, reaction.empty() ? nullptr : &reaction);
   }
   if (viscous_) {
-    report.viscous = viscous_->solve(ps_, *materials_, eta_, friction_.get(), g_, dt, kernel_->h(), ustar_);
+    const auto perf = viscous_->solve(ps_, *materials_, eta_, friction_.get(), g_, dt, kernel_->h(), lagged_, ustar_);
+    report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
     timer_.add("viscous assembly", viscous_->assemblySeconds());
     for (const auto& perf : report.viscous) {
       timer_.add("viscous solve", perf.assemblySeconds + perf.setupSeconds + perf.solveSeconds);
@@ -259,7 +286,12 @@ StepReport IsphSolver::step(const Time& time) {
   }
   intermediateVelocity(time, report);
   {
-    report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
+    if (!lagged_.empty()) {
+      // The increment that the step applies to the predictor that saw pⁿ.
+      report.ppe = ppe_->solveIncrement(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt, increment_);
+    } else {
+      report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
+    }
     timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
     timer_.add("PPE setup", report.ppe.setupSeconds);
     timer_.add("PPE solve", report.ppe.solveSeconds);
@@ -271,7 +303,14 @@ StepReport IsphSolver::step(const Time& time) {
   {
     auto t = timer_.scope("velocity correction and shifting");
     std::vector<Vec3> oldU(ps_.cloud.U.begin(), ps_.cloud.U.begin() + static_cast<long>(ps_.nMaterial));
-    correctVelocity(ps_, correction_, ustar_, g_, dt);
+    if (!lagged_.empty()) {
+      correctVelocityIncrement(ps_, correction_, ustar_, increment_, dt);
+      std::vector<Vec3> ustarTotal(ustar_);  // the walls' pressure from the whole condition
+      for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustarTotal[a] -= dt * lagged_[a];
+      updateWallPressure(ps_, ustarTotal, g_, dt);
+    } else {
+      correctVelocity(ps_, correction_, ustar_, g_, dt);
+    }
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
       ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
     }

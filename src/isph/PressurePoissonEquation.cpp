@@ -54,7 +54,8 @@ int pinClosedRegions(const ParticleSystem& ps, const std::vector<char>& touchesD
 
 void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& kernel,
                                        const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
-                                       const std::vector<char>& freeSurfaceIn, const Vec3& g, double dt) {
+                                       const std::vector<char>& freeSurfaceIn, const Vec3& g, double dt,
+                                       const std::vector<double>* base) {
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const std::size_t nMat = ps.nMaterial;
@@ -185,13 +186,16 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
           system_.columns[pos] = rb;
           system_.values[pos] = C;
           ++pos;
+        } else if (base) {
+          rhsWall -= C * (*base)[b];  // the Dirichlet value δp_b = −pⁿ_b
         }
         nearBoundary = nearBoundary || freeSurfaceIn[b];
         thetaStar += ps.volume[b] * kernel.W((xab + dxa - dt * ustar[b]).norm());
         divergence += ps.volume[b] * (ustar[b] - ustar[a]).dot(L[a] * (nl.F[kk] * xab));
       } else {
         // Wall or dummy: p_b = p_a + δ_ab (WallBoundaryPressure); C_ab (p_a − p_b) = −C_ab δ_ab.
-        rhsWall += C * wallPressureIncrement(ps, ustar, g, a, b, dt);
+        rhsWall += C * (base ? wallPressureIncrementOfIncrement(ps, ustar, a, b, dt)
+                             : wallPressureIncrement(ps, ustar, g, a, b, dt));
         nearBoundary = true;
         thetaLattice += ps.volume[b] * kernel.W((xab + halfDx * wallNormal(ps, b)).norm());
         thetaStar += ps.volume[b] * nl.W[kk];  // the wall moves with a: no relative motion
@@ -238,6 +242,28 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
   }
   updateWallPressure(ps, ustar, g, dt);
+  return perf;
+}
+
+SolverPerformance PressurePoissonEquation::solveIncrement(ParticleSystem& ps, const Kernel& kernel,
+                                                          const KernelGradientCorrection& L,
+                                                          const std::vector<Vec3>& ustar,
+                                                          const std::vector<char>& freeSurface, const Vec3& g,
+                                                          double dt, std::vector<double>& increment) {
+  const auto start = std::chrono::steady_clock::now();
+  auto& p = ps.cloud.p;
+  const std::vector<double> base(p.begin(), p.begin() + static_cast<long>(ps.nMaterial));
+  assemble(ps, kernel, L, ustar, freeSurface, g, dt, &base);
+  assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<double> x(particleOf_.size(), 0.0);  // warm start: no change
+  SolverPerformance perf = solver_->solve(system_, x);
+  increment.assign(ps.nMaterial, 0.0);
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    p[a] = rowOf_[a] >= 0 ? base[a] + x[static_cast<std::size_t>(rowOf_[a])] : 0.0;
+    if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
+    increment[a] = p[a] - base[a];
+  }
   return perf;
 }
 

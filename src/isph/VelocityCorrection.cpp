@@ -30,4 +30,64 @@ void correctVelocity(ParticleSystem& ps, const KernelGradientCorrection& L, cons
   std::copy(U.begin(), U.end(), ps.cloud.U.begin());
 }
 
+Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const std::vector<Vec3>& ustar,
+                         const Vec3& g, std::size_t a, double dt, Vec3* frictionReaction) {
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const double qa = c.p[a] / (ps.rho[a] * ps.rho[a]);
+  const double halfDx = 0.5 * ps.dx;
+  Vec3 sum = Vec3::Zero(), reaction = Vec3::Zero();
+  for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    const auto b = static_cast<std::size_t>(nl.index[kk]);
+    const double mb = ps.rho[b] * ps.volume[b];
+    if (ps.isMaterial(b)) {
+      sum -= mb * (qa + c.p[b] / (ps.rho[b] * ps.rho[b])) * nl.F[kk] * (c.positions[a] - c.positions[b]);
+      continue;
+    }
+    // The wall layers as if on the material's lattice (half a spacing back along the normal:
+    // the symmetric form is consistent only for a complete lattice, and the wall particles sit
+    // on the wall line, half a spacing closer; as they are, a layer at rest on its bed was
+    // held up by about twice its weight). Their pressure is the wall condition there.
+    const Vec3& n = wallNormal(ps, b);
+    const Vec3 xb = c.positions[b] - halfDx * n;
+    const Vec3 rba = xb - c.positions[a];
+    const double r = rba.norm();
+    if (r <= 0 || r >= kernel.supportRadius()) continue;
+    const double rn = rba.dot(n);
+    const Vec3 G = ps.frictionWall[b] ? ps.wallTangentialGradient[a] : Vec3(ps.rho[a] * g);
+    const double pb = c.p[a] + std::max(ps.rho[a] * ustar[a].dot(n) / dt * rn, -ps.wallPullLimit[a]) +
+                      G.dot(rba - rn * n);
+    // A wall pushes along its normal only: the tangential traction is the friction's.
+    const Vec3 f = mb * (qa + pb / (ps.rho[b] * ps.rho[b])) * kernel.dWdr(r) / r * rba;
+    const Vec3 fn = f.dot(n) * n;
+    sum += fn;
+    if (ps.frictionWall[b]) reaction += fn;
+  }
+  if (frictionReaction) *frictionReaction = c.mass[a] * reaction;
+  return sum;
+}
+
+void correctVelocityIncrement(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                              const std::vector<double>& increment, double dt) {
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  const long n = static_cast<long>(ps.nMaterial);
+  std::vector<Vec3> U(ps.nMaterial);
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < n; ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
+    Vec3 sum = Vec3::Zero();
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const double d = ps.isMaterial(b) ? increment[b] - increment[a]
+                                        : wallPressureIncrementOfIncrement(ps, ustar, a, b, dt);
+      sum += ps.volume[b] * d * nl.F[kk] * (c.positions[a] - c.positions[b]);
+    }
+    U[a] = ustar[a] - dt / ps.rho[a] * (L[a] * sum);  // Eq. 11 on the increment
+  }
+  std::copy(U.begin(), U.end(), ps.cloud.U.begin());
+}
+
 }  // namespace isph

@@ -11,12 +11,30 @@
 
 #include "isph/KernelGradientCorrection.hpp"
 #include "isph/ParticleSystem.hpp"
+#include "sph/kernels/Kernel.hpp"
 
 namespace isph {
 
 // ∇p_a of material particle a as Eq. 11 uses it.
 Vec3 pressureGradient(const ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
                       const Vec3& g, std::size_t a, double dt);
+
+// Eq. 11 of the incremental projection: u = u* − (dt/ρ)∇δp with δp = p^{n+1} − pⁿ per
+// material particle and the walls' condition on the increment.
+void correctVelocityIncrement(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
+                              const std::vector<double>& increment, double dt);
+
+// −∇p_a/ρ_a in the symmetric (momentum-conserving) form −Σ_b m_b (p_a/ρ_a² + p_b/ρ_b²)∇_a W_ab,
+// walls with the condition of WallBoundaryPressure for `ustar`: the lagged pressure force of
+// the incremental projection. Pairs of material particles exchange equal and opposite
+// forces, so the pressure inside a zone that moves as a rigid body exerts no net force on it
+// (the difference form of Eq. 11 is not conservative, and in such a zone, where the pressure
+// is carried from step to step, its error would act for ever). A wall pair pushes along the
+// wall normal only (the tangential traction is the friction's); `frictionReaction`, if given,
+// gets the force [N, per metre in 2D] of the friction walls' pairs on a: its normal reaction,
+// which WallFriction then limits the tangential traction by.
+Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const std::vector<Vec3>& ustar,
+                         const Vec3& g, std::size_t a, double dt, Vec3* frictionReaction = nullptr);
 
 // Sets ps.cloud.U of the material particles from u* and the pressure.
 void correctVelocity(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,

@@ -43,6 +43,16 @@ inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<
   return std::max(normal, -ps.wallPullLimit[a]) + G.dot(rba - rn * n);
 }
 
+// The same for the pressure increment δp = p^{n+1} − pⁿ of the incremental projection, whose
+// predictor u* already holds the force of pⁿ: the normal condition ∂δp/∂n = ρ u*·n/dt (with
+// the same limit on the pull) and no tangential part (pⁿ carries it).
+inline double wallPressureIncrementOfIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar,
+                                               std::size_t a, std::size_t b, double dt) {
+  const Vec3& n = wallNormal(ps, b);
+  const double rn = (ps.cloud.positions[b] - ps.cloud.positions[a]).dot(n);
+  return std::max(ps.rho[a] * ustar[a].dot(n) / dt * rn, -ps.wallPullLimit[a]);
+}
+
 // After the solve: each wall and dummy particle takes the Shepard (kernel-weighted) mean of
 // p_b(a) over its material neighbours, or 0 where no material is near. These are the
 // pressures that are written and that the force on a wall integrates.

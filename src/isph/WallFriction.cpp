@@ -22,7 +22,7 @@ WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materi
   active_ = anyFriction && anySlides;
 }
 
-void WallFriction::update(const ParticleSystem& ps) {
+void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* reaction) {
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const std::size_t n = ps.size();
@@ -60,7 +60,7 @@ void WallFriction::update(const ParticleSystem& ps) {
   for (long ia = 0; ia < nMat; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
     if (!slides_[static_cast<std::size_t>(c.material[a])]) continue;
-    double F = 0;
+    double F = 0, tanSum = 0, weight = 0;
     Vec3 normal = Vec3::Zero();
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
@@ -68,8 +68,11 @@ void WallFriction::update(const ParticleSystem& ps) {
       if (!ps.isWall(w) || tanDelta_[static_cast<std::size_t>(c.patch[w])] <= 0) continue;
       F += share[w] * nl.W[kk];
       normal += nl.W[kk] * c.normal[w];
+      tanSum += nl.W[kk] * tanDelta_[static_cast<std::size_t>(c.patch[w])];
+      weight += nl.W[kk];
     }
     const double len = normal.norm();
+    if (reaction && len > 0) F = tanSum / weight * std::max((*reaction)[a].dot(normal / len), 0.0);
     if (F > 0 && len > 0) {
       capacity_[a] = F;
       normal_[a] = normal / len;

@@ -6,9 +6,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
+
+#include "particles/ParticleCloud.hpp"
 
 namespace isph::test {
 
@@ -50,6 +53,18 @@ class CaseRunner {
     std::ofstream(dir_ / file) << edited;
   }
 
+  // Replaces the text `from` (which must occur) by `to` in a case file.
+  void replaceText(const std::string& file, const std::string& from, const std::string& to) {
+    std::ifstream in(dir_ / file);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string edited = text.str();
+    const auto at = edited.find(from);
+    ASSERT_NE(at, std::string::npos) << "'" << from << "' not found in " << file;
+    edited.replace(at, from.size(), to);
+    std::ofstream(dir_ / file) << edited;
+  }
+
   // Runs an application in the case; returns its exit code (its log is log.<name>).
   int run(const std::string& exe, const std::string& name, const std::string& options = "") const {
     const std::string cmd = "'" + exe + "' " + options + " -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
@@ -82,5 +97,18 @@ class CaseRunner {
  private:
   std::filesystem::path dir_;
 };
+
+// The largest distance any material particle has moved between two clouds of a case.
+inline double largestMaterialDisplacement(const ParticleCloud& start, const ParticleCloud& end) {
+  std::map<label, Vec3> initial;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (start.kind[i] == 0) initial[start.origId[i]] = start.positions[i];
+  }
+  double largest = 0;
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    if (end.kind[i] == 0) largest = std::max(largest, (end.positions[i] - initial.at(end.origId[i])).norm());
+  }
+  return largest;
+}
 
 }  // namespace isph::test

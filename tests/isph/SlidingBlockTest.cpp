@@ -3,6 +3,8 @@
 // centre of mass must travel as a rigid block, s = a t²/2 with a = g (sin θ − tan δ cos θ)
 // = 1.8128 m/s² (tutorials/validation/slidingBlock/validation/, elementary mechanics), the
 // acceleration fitted over the ten written times within 3 %, with no wall crossing.
+// The same block with δ = 35° (tan δ = 0.70 > tan θ = 0.58) must stay put: no particle
+// moves more than dx/10 over the 1 s (the creep limit).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,6 +52,22 @@ TEST(SlidingBlock, CentreOfMassAcceleratesAsACoulombBlock) {
   std::printf("acceleration %.4f m/s^2, Coulomb block %.4f m/s^2 (%+.2f%%)\n", fitted, exact,
               100 * (fitted / exact - 1));
   EXPECT_NEAR(fitted / exact, 1.0, 0.03) << "centre-of-mass acceleration against g (sin theta - tan delta cos theta)";
+}
+
+TEST(SlidingBlock, StaysPutWhenTheBedFrictionExceedsTheSlope) {
+  const double dx = 0.005;
+  CaseRunner c("slidingBlock", "slidingBlock");
+  ASSERT_NO_FATAL_FAILURE(c.replaceText("system/particleMeshDict", "frictionAngle 20;", "frictionAngle 35;"));
+  ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
+  EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+
+  const ParticleCloud start = readCloud(c.path() / "0", "particles");
+  const ParticleCloud end = readCloud(c.path() / "1", "particles");
+  const double maxDisplacement = isph::test::largestMaterialDisplacement(start, end);
+  const double travel = meanMaterialX(end) - meanMaterialX(start);
+  std::printf("centre of mass travel %.3g mm, largest particle displacement %.3g mm (dx/10 = %.3g mm)\n", 1e3 * travel,
+              1e3 * maxDisplacement, 100 * dx);
+  EXPECT_LT(maxDisplacement, 0.1 * dx) << "the block crept or deformed";
 }
 
 }  // namespace
