@@ -1,0 +1,33 @@
+#!/bin/bash
+# The flagship tutorial as a user runs it, short: tutorials/landslides/barrier/Allrun -test
+# (10.8 mm spacing, 2.5 s) on a copy, then its results.txt against statics:
+#  - the late force on the barrier lies between the along-bed weight of the sand at rest
+#    behind it held by fully mobilised bed friction, W (sin θ − tan δ cos θ), less 10 % for
+#    the coarse spacing, and that weight without friction, W sin θ (the barrier can carry
+#    neither less than what friction cannot hold nor more than the whole along-bed weight);
+#  - the impact peak exceeds the late force; no particle crossed a wall.
+# usage: testBarrier.sh <project dir> <build dir>
+set -eu
+project=$1
+build=$2
+work=$(mktemp -d /tmp/isphTest-barrier.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+cp -r "$project/tutorials/landslides/barrier" "$work/barrier"
+export ISPH_PROJECT_DIR=$project ISPH_BUILD_DIR=$build
+"$work/barrier/Allrun" -test > "$work/Allrun.log" 2>&1 || { cat "$work/Allrun.log"; tail -30 "$work/barrier/log.isphLandslideFoam"; exit 1; }
+r=$work/barrier/results.txt
+cat "$r"
+value() { awk -v k="$1" '$1 == k { print $2 }' "$r"; }
+fail=0
+check() {  # check <description> <awk condition>
+    if awk "BEGIN { exit !($2) }"; then echo "ok:   $1"; else echo "FAIL: $1 ($2)"; fail=1; fi
+}
+residual=$(value residualForce)
+lower=$(value wedgeWeightLessBedFriction)
+upper=$(value wedgeWeightAlongBed)
+peak=$(value peakForce)
+check "late force $residual N >= 0.9 x W (sin - tan delta cos) = 0.9 x $lower N" "$residual >= 0.9 * $lower"
+check "late force $residual N <= W sin theta = $upper N" "$residual <= $upper"
+check "peak $peak N above the late force $residual N" "$peak > $residual"
+check "no wall crossings" "$(value wallCrossings) == 0"
+exit $fail
