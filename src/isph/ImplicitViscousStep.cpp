@@ -95,8 +95,6 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   // material lets it go: from rest, |u_t| grows by the ratio of the driving force to F_a per
   // pass until the Coulomb regime is reached.
   const std::size_t n = static_cast<std::size_t>(nMat);
-  std::vector<double> diagonal(n);
-  for (std::size_t a = 0; a < n; ++a) diagonal[a] = system_.values[static_cast<std::size_t>(system_.rowStart[a])];
   std::vector<double> slip(n, 0.0);  // |u_t| that sets the drag rate
   if (drag) {
     for (std::size_t a = 0; a < n; ++a) {

@@ -150,7 +150,8 @@ std::string IsphSchemes::describe() const {
                      viscousFactor, maxGrowth);
   out += fmt::format("    deviatoric term (where a material has one): {}\n",
                      viscousTerm == ViscousTerm::implicit
-                         ? "semi-implicit (Morris operator, one PCG solve per component; no viscous time-step limit)"
+                         ? "semi-implicit (Morris operator, one PCG solve per component, or one for all components "
+                           "where a Coulomb wall drag acts; no viscous time-step limit)"
                          : "explicit (Morris operator; viscous time-step limit)");
   if (viscousTerm == ViscousTerm::implicit) {
     out += fmt::format("    pressure in the viscous solve: {}\n",
