@@ -33,7 +33,8 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
 
   // T_w / Σ_c W_cw for every wall particle of a friction patch.
   std::vector<double> share(n, 0.0);
-  const long wallEnd = static_cast<long>(ps.dummyBegin());
+  // (With the normal reaction given, the wall pressures are not needed.)
+  const long wallEnd = reaction ? static_cast<long>(ps.wallBegin()) : static_cast<long>(ps.dummyBegin());
 #pragma omp parallel for schedule(static)
   for (long iw = static_cast<long>(ps.wallBegin()); iw < wallEnd; ++iw) {
     const auto w = static_cast<std::size_t>(iw);
