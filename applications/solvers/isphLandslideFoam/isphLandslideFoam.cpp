@@ -2,8 +2,11 @@
 // method, Eqs. 6-11). Reads the particles of the start time, steps them to endTime and
 // writes time directories as system/controlDict says; every time directory is a restart.
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
+// Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
+// sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
 #include "isph/IsphSolver.hpp"
 #include "isph/StepWithRetry.hpp"
@@ -26,6 +29,7 @@ void run(const isph::ArgList& args) {
   isph::IsphSolver solver(time);
 
   isph::info("\nStarting time loop\n");
+  isph::ProgressReporter progress(spec.name, time.value());
   while (time.run()) {
     const isph::TimeStepLimits limits = solver.nextDeltaT(time);
     if (time.settings().adjustTimeStep) time.adjustDeltaT(limits.value());
@@ -48,7 +52,9 @@ void run(const isph::ArgList& args) {
     functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
                              .kernel = &solver.kernel(), .neighbours = nullptr});
     isph::info("{}\n", time.executionTimeLine());
+    progress.update(time.value(), time.settings().endTime);
   }
+  progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
   isph::info("Time spent per phase:\n{}", solver.timer().table());
 }

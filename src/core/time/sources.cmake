@@ -1,7 +1,9 @@
-# Time names and selection, controlDict run controls, the run-time controller.
+# Time names and selection, controlDict run controls, the run-time controller, progress.
 target_sources(isphCore PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/TimeName.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TimeSelector.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ControlDict.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/RunProgress.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ProgressReporter.cpp
 )
