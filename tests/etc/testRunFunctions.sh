@@ -186,6 +186,72 @@ check "failure message shows the end of the log" grep -q "something went wrong" 
 rc=$?
 check "runApplication failure stops a 'set -e' caller [status $rc]" test "$rc" = 3
 
+echo "== runApplication: progress on fd 3"
+# A fake solver: its own output on stdout and stderr, its progress on $ISPH_PROGRESS_FD
+apps="$scratch/apps"
+mkdir -p "$apps"
+cat > "$apps/progressApp" <<'EOF'
+#!/bin/sh
+echo "own output"
+echo "own error" >&2
+echo "fd=${ISPH_PROGRESS_FD:-unset}"
+if [ -n "${ISPH_PROGRESS_FD:-}" ]; then
+    echo "progress 50%" >&"$ISPH_PROGRESS_FD" || echo "progress fd unusable"
+fi
+EOF
+chmod +x "$apps/progressApp"
+logText() { tr '\n' '|' < log.progressApp; }
+
+out=$(runApplication "$apps/progressApp" 2> "$scratch/progress.err")
+rc=$?
+check "progress: the app succeeds [rc $rc]" test "$rc" = 0
+check "progress: stdout says Running [got '$out']" test "$out" = "Running progressApp on $caseDir"
+check "progress: the caller's stderr shows the app's progress [got '$(cat "$scratch/progress.err")']" \
+    test "$(cat "$scratch/progress.err")" = "progress 50%"
+check "progress: log.progressApp holds the app's own output only [got '$(logText)']" \
+    test "$(logText)" = "own output|own error|fd=3|"
+check "progress: ISPH_PROGRESS_FD is not left set in the caller" test -z "${ISPH_PROGRESS_FD+set}"
+
+runApplication -o -quiet "$apps/progressApp" > /dev/null 2> "$scratch/progress.err"
+check "-quiet: nothing on the caller's stderr" test ! -s "$scratch/progress.err"
+check "-quiet: the app gets no ISPH_PROGRESS_FD [got '$(logText)']" \
+    test "$(logText)" = "own output|own error|fd=unset|"
+
+ISPH_PROGRESS=off runApplication -o "$apps/progressApp" > /dev/null 2> "$scratch/progress.err"
+check "ISPH_PROGRESS=off: nothing on stderr, no ISPH_PROGRESS_FD [got '$(logText)']" \
+    eval 'test ! -s "$scratch/progress.err" && grep -qx "fd=unset" log.progressApp'
+
+# An ISPH_PROGRESS_FD inherited from an outer run is not passed on with progress off
+ISPH_PROGRESS_FD=3 runApplication -o -q "$apps/progressApp" > /dev/null 2>&1
+check "-quiet unsets an inherited ISPH_PROGRESS_FD" grep -qx "fd=unset" log.progressApp
+
+runApplication -o "$apps/progressApp" > /dev/null 2>&-
+rc=$?
+check "progress: a caller without stderr still runs the app [rc $rc, log '$(logText)']" \
+    eval 'test "$rc" = 0 && grep -qx "fd=unset" log.progressApp'
+
+runApplication -o "$apps/progressApp" > /dev/null 2> "$scratch/progress.err" 3> "$scratch/fd3"
+check "progress goes to the caller's stderr, not to the caller's own fd 3" \
+    eval 'test ! -s "$scratch/fd3" && grep -qx "progress 50%" "$scratch/progress.err"'
+
+# A failing solver: its status, the end of its log on stderr (after its progress)
+cat > "$apps/failingSolver" <<'EOF'
+#!/bin/sh
+for i in $(seq 1 30); do echo "step $i"; done
+[ -n "${ISPH_PROGRESS_FD:-}" ] && echo "progress 10%" >&"$ISPH_PROGRESS_FD"
+echo "FATAL: diverged" >&2
+exit 4
+EOF
+chmod +x "$apps/failingSolver"
+err=$(runApplication "$apps/failingSolver" 2>&1 >/dev/null)
+rc=$?
+check "a failing solver: runApplication returns its status 4 [got $rc]" test "$rc" = 4
+check "a failing solver: its progress, then the failure on stderr" \
+    test "$(head -n 2 <<< "$err")" = "$(printf 'progress 10%%\nfailingSolver failed (exit status 4): see log.failingSolver')"
+check "a failing solver: stderr shows the last 20 lines of its log (step 12 on)" \
+    eval 'grep -qx "step 12" <<< "$err" && ! grep -qx "step 11" <<< "$err" && grep -qx "FATAL: diverged" <<< "$err"'
+check "a failing solver: the log has no progress" eval '! grep -q progress log.failingSolver'
+
 echo "== isTest/notTest"
 check "isTest finds -test" isTest a -test b
 check "notTest without -test" notTest a b
@@ -243,6 +309,14 @@ check "$posixSh: runApplication runs, then refuses" \
 check "$posixSh: runApplication returns a failing app's status" grep -qx "rc=1" <<< "$shOut"
 check "$posixSh: cleanCase keeps 0, removes 0.2" \
     test "$(grep '^0' <<< "$shOut" | tr '\n' ' ')" = "0 "
+
+dashProgress=$(
+    cd "$shCase" && env -u ISPH_PROJECT_DIR ISPH_ETC="$projectDir/etc" "$posixSh" -c '
+        . "$ISPH_ETC/RunFunctions" || exit 10
+        runApplication "$1" 2>&1 >/dev/null' sh "$apps/progressApp"
+)
+check "$posixSh: runApplication shows the progress on stderr [got '$dashProgress']" \
+    eval 'test "$dashProgress" = "progress 50%" && ! grep -q progress "$shCase/log.progressApp"'
 
 # Located by walking up from $PWD (no ISPH_* set, no BASH_SOURCE in dash)
 walkOut=$(
