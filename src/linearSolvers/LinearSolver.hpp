@@ -46,6 +46,10 @@ class LinearSolver {
   // x holds the initial guess (warm start; empty means zero) and receives the solution.
   virtual SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) = 0;
   virtual std::string name() const = 0;
+  // A hint for the next solve only: its matrix differs little from the last one's (same
+  // size and numbering, a few changed entries), so a preconditioner built for the last may
+  // be kept. Solvers without a reusable preconditioner ignore it.
+  virtual void keepPreconditionerForNextSolve() {}
 };
 
 // The selection table: solvers register a factory under the name users write after `solver`.

@@ -77,6 +77,40 @@ TEST(ReuseSetup, HierarchyIsRebuiltAfterNSolvesAndForANewSize) {
   EXPECT_FALSE(amg.lastReused());
 }
 
+// keepPreconditionerForNextSolve: the hierarchy is kept for the one solve that follows the
+// hint (a fixed-point pass on a slightly changed matrix), whatever reuseSetup says, and the
+// solve after it builds afresh.
+TEST(ReuseSetup, KeepHintReusesForTheNextSolveOnly) {
+  const SparseSystem base = latticePoisson(60, Stencil::Sph21);
+  const auto solver = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 1;");
+  const auto& amg = *asHypre(*solver).amg();
+  std::vector<double> x;
+  ASSERT_TRUE(solver->solve(perturbed(base, 0, 0.05), x).converged);
+  solver->keepPreconditionerForNextSolve();
+  const SparseSystem A1 = perturbed(base, 1, 0.05);
+  const auto kept = solver->solve(A1, x);
+  ASSERT_TRUE(kept.converged) << kept.str();
+  EXPECT_TRUE(amg.lastReused());
+  EXPECT_EQ(amg.hierarchiesBuilt(), 1);
+  EXPECT_LE(relativeDifference(x, exactSolution(A1)), 1e-7);
+  ASSERT_TRUE(solver->solve(perturbed(base, 2, 0.05), x).converged);
+  EXPECT_FALSE(amg.lastReused());
+  EXPECT_EQ(amg.hierarchiesBuilt(), 2);
+}
+
+// A matrix of another size is never solved with a kept hierarchy.
+TEST(ReuseSetup, KeepHintIsIgnoredForANewSize) {
+  const auto solver = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 1;");
+  std::vector<double> x;
+  ASSERT_TRUE(solver->solve(latticePoisson(30, Stencil::FivePoint), x).converged);
+  solver->keepPreconditionerForNextSolve();
+  x.clear();
+  const auto perf = solver->solve(latticePoisson(31, Stencil::FivePoint), x);
+  EXPECT_TRUE(perf.converged) << perf.str();
+  EXPECT_FALSE(asHypre(*solver).amg()->lastReused());
+  EXPECT_EQ(asHypre(*solver).amg()->hierarchiesBuilt(), 2);
+}
+
 TEST(ReuseSetup, ReuseWorksWithGmresAndBiCGSTAB) {
   const SparseSystem base = latticePoisson(40, Stencil::Sph21);
   for (const char* entries : {"solver GMRES; reuseSetup 3;", "solver BiCGSTAB; reuseSetup 3;"}) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -82,7 +83,8 @@ void BoomerAMG::destroy() {
 
 HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
-  if (sameMatrixShape && solvesWithHierarchy_ < controls_.reuseSetup) {
+  const bool keep = std::exchange(keepNext_, false);
+  if (sameMatrixShape && (keep || solvesWithHierarchy_ < controls_.reuseSetup)) {
     ++solvesWithHierarchy_;
     lastReused_ = true;
     return keepHierarchy;

@@ -15,6 +15,8 @@
 // Reuse: the hierarchy built for one matrix preconditions the next reuseSetup - 1 solves
 // (the finest-level smoother always uses the current matrix; the coarse levels are the old
 // ones, still an SPD preconditioner). A matrix of another size forces a rebuild.
+// keepForNextSolve() asks the same for the next solve alone, whatever reuseSetup says (the
+// caller knows its next matrix is a small change of the last: a fixed-point pass).
 #include <HYPRE_parcsr_ls.h>
 
 #include <string>
@@ -47,6 +49,7 @@ class BoomerAMG {
   // returns the preconditioner-setup function to hand to the Krylov solver, either
   // HYPRE_BoomerAMGSetup on a fresh hierarchy or a no-op that keeps the current one.
   HYPRE_PtrToParSolverFcn prepare(long firstRow, long nRows);
+  void keepForNextSolve() { keepNext_ = true; }
 
   HYPRE_Solver handle() const { return amg_; }
   static HYPRE_PtrToParSolverFcn solveFunction() { return HYPRE_BoomerAMGSolve; }
@@ -64,6 +67,7 @@ class BoomerAMG {
   int solvesWithHierarchy_ = 0;
   int built_ = 0;
   bool lastReused_ = false;
+  bool keepNext_ = false;
 };
 
 }  // namespace isph

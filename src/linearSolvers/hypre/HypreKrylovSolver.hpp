@@ -20,6 +20,9 @@ class HypreKrylovSolver : public ControlledLinearSolver {
   ~HypreKrylovSolver() override;
 
   std::string name() const override;  // "BoomerAMG-PCG", "diagonal-GMRES", "BiCGSTAB"
+  void keepPreconditionerForNextSolve() override {
+    if (amg_) amg_->keepForNextSolve();
+  }
   // The BoomerAMG preconditioner (nullptr unless chosen): hierarchies built, reuse.
   const BoomerAMG* amg() const { return amg_.get(); }
 
