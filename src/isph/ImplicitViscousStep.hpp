@@ -33,7 +33,8 @@ namespace isph {
 class ImplicitViscousStep {
  public:
   // One solver per component (their AMG set-ups are kept apart), configured from solverDict.
-  ImplicitViscousStep(const Dictionary& solverDict, int dimension);
+  // frictionPasses: at most this many solves per step to settle the bed drag (≥ 1).
+  ImplicitViscousStep(const Dictionary& solverDict, int dimension, int frictionPasses);
   ~ImplicitViscousStep();
 
   // u* for the material particles (walls and dummies: 0); one performance per component.
@@ -45,7 +46,6 @@ class ImplicitViscousStep {
                                        std::vector<Vec3>& ustar);
 
   double assemblySeconds() const { return assemblySeconds_; }
-  static constexpr int maxFrictionPasses = 4;
 
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
@@ -57,6 +57,7 @@ class ImplicitViscousStep {
   SparseSystem system_;
   SparseSystem coupled_;
   double assemblySeconds_ = 0;
+  int maxFrictionPasses_ = 4;
 };
 
 }  // namespace isph

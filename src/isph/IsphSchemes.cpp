@@ -109,6 +109,8 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
     s.frictionSlipSpeed = wf.get<double>("slipSpeed");
     requireRange(wf, "slipSpeed", s.frictionSlipSpeed, 1e-12, 1.0);
   }
+  s.frictionPasses = wf.getOrDefault("passes", s.frictionPasses);
+  requireRange(wf, "passes", s.frictionPasses, 1, 20);
   wf.checkKeywords();
 
   d.checkKeywords();
@@ -150,9 +152,11 @@ std::string IsphSchemes::describe() const {
                      viscousFactor, maxGrowth);
   out += fmt::format("    deviatoric term (where a material has one): {}\n",
                      viscousTerm == ViscousTerm::implicit
-                         ? "semi-implicit (Morris operator, one PCG solve per component, or one for all components "
-                           "where a Coulomb wall drag acts; no viscous time-step limit)"
-                         : "explicit (Morris operator; viscous time-step limit)");
+                         ? fmt::format("semi-implicit (Morris operator, one PCG solve per component, or one for all "
+                                       "components where a Coulomb wall drag acts, repeated up to {} times to "
+                                       "settle the drag; no viscous time-step limit)",
+                                       frictionPasses)
+                         : std::string("explicit (Morris operator; viscous time-step limit)"));
   if (viscousTerm == ViscousTerm::implicit) {
     out += fmt::format("    pressure in the viscous solve: {}\n",
                        incrementalPressure == MaterialScope::none

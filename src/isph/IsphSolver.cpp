@@ -79,7 +79,7 @@ IsphSolver::IsphSolver(const Time& time) {
   ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
                                                    std::move(keepCompressed));
   if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
-    viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), dim);
+    viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), dim, schemes_.frictionPasses);
     bool granular = false;
     for (std::size_t i = 0; i < materials_->size(); ++i) {
       granular = granular || (*materials_)[i].wallContact() == WallContact::coulombFriction;
