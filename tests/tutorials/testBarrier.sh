@@ -7,21 +7,8 @@
 #    neither less than what friction cannot hold nor more than the whole along-bed weight);
 #  - the impact peak exceeds the late force; no particle crossed a wall.
 # usage: testBarrier.sh <project dir> <build dir>
-set -eu
-project=$1
-build=$2
-work=$(mktemp -d /tmp/isphTest-barrier.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-cp -r "$project/tutorials/landslides/barrier" "$work/barrier"
-export ISPH_PROJECT_DIR=$project ISPH_BUILD_DIR=$build
-"$work/barrier/Allrun" -test > "$work/Allrun.log" 2>&1 || { cat "$work/Allrun.log"; tail -30 "$work/barrier/log.isphLandslideFoam"; exit 1; }
-r=$work/barrier/results.txt
-cat "$r"
-value() { awk -v k="$1" '$1 == k { print $2 }' "$r"; }
-fail=0
-check() {  # check <description> <awk condition>
-    if awk "BEGIN { exit !($2) }"; then echo "ok:   $1"; else echo "FAIL: $1 ($2)"; fail=1; fi
-}
+. "${0%/*}/TutorialTest.sh"
+runTutorial "$1" "$2" landslides/barrier
 residual=$(value residualForce)
 lower=$(value wedgeWeightLessBedFriction)
 upper=$(value wedgeWeightAlongBed)
