@@ -3,6 +3,9 @@
 // solver's validation tests.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -23,10 +26,23 @@ inline std::string readText(const std::filesystem::path& file) {
   return text.str();
 }
 
+// A folder of its own for each test and process: ctest -j runs the tests of one binary at
+// once, and two tests that copy the same tutorial must not share a case (they did: the two
+// sliding-block tests overwrote each other's time directories).
+inline std::filesystem::path caseFolder(const std::string& name) {
+  std::string id = "isphTest-" + name;
+  if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
+    id += std::string("-") + info->test_suite_name() + "." + info->name();
+  }
+  for (char& ch : id) {
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '.' && ch != '_') ch = '_';
+  }
+  return std::filesystem::temp_directory_path() / (id + "-" + std::to_string(::getpid()));
+}
+
 class CaseRunner {
  public:
-  CaseRunner(const std::string& tutorial, const std::string& name)
-      : dir_(std::filesystem::temp_directory_path() / ("isphTest-" + name)) {
+  CaseRunner(const std::string& tutorial, const std::string& name) : dir_(caseFolder(name)) {
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     // The case's dictionaries and data only: not the results of a run of the tutorial itself.
