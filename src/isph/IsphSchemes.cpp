@@ -27,6 +27,19 @@ const char* toString(PpeSource s) {
 
 IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   IsphSchemes s;
+  s.method = d.getChoiceOrDefault("method", {"isph", "wcsph"}, "isph") == "wcsph" ? Method::wcsph : Method::isph;
+  const Dictionary wc = d.subDictOrEmpty("wcsph");
+  if (s.method == Method::wcsph) {
+    if (wc.found("soundSpeed")) {  // else from the scene (the solver logs the value)
+      s.soundSpeed = wc.get<double>("soundSpeed");
+      requireRange(wc, "soundSpeed", s.soundSpeed, 1e-6, 1e6);
+    }
+    s.densityDiffusion = wc.getOrDefault("densityDiffusion", s.densityDiffusion);
+    requireRange(wc, "densityDiffusion", s.densityDiffusion, 0.0, 1.0);
+    s.artificialViscosity = wc.getOrDefault("artificialViscosity", s.artificialViscosity);
+    requireRange(wc, "artificialViscosity", s.artificialViscosity, 0.0, 10.0);
+  }
+  wc.checkKeywords({"soundSpeed", "densityDiffusion", "artificialViscosity"});
   s.kernel = d.getOrDefault("kernel", s.kernel);
   s.hOverDx = d.getOrDefault("hOverDx", s.hOverDx);
   requireRange(d, "hOverDx", s.hOverDx, 0.5, 4.0);
@@ -96,9 +109,17 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   requireRange(ws, "distance", s.wallSafeguardDistance, 0.0, 1.0);
   ws.checkKeywords();
 
-  s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, "implicit") == "explicit"
+  const bool wcsph = s.method == Method::wcsph;
+  s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, wcsph ? "explicit" : "implicit") ==
+                          "explicit"
                       ? ViscousTerm::explicit_
                       : ViscousTerm::implicit;
+  if (wcsph && s.viscousTerm == ViscousTerm::implicit) {
+    fatalIOError(d.findEntry("viscousTerm")->location(),
+                 fmt::format("keyword 'viscousTerm' in {}: 'implicit' needs 'method isph'; the weakly-compressible "
+                             "method (method wcsph) is explicit: use 'viscousTerm explicit' or remove the entry",
+                             d.name()));
+  }
   const std::string incremental = d.getChoiceOrDefault("incrementalPressure", {"none", "granular", "all"}, "none");
   s.incrementalPressure = incremental == "none" ? MaterialScope::none
                           : incremental == "all" ? MaterialScope::all
@@ -119,6 +140,16 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
 
 std::string IsphSchemes::describe() const {
   std::string out;
+  if (method == Method::wcsph) {
+    out += fmt::format("    method: weakly-compressible SPH, explicit (linear equation of state, sound speed {}; "
+                       "delta-SPH density diffusion {}; Monaghan artificial viscosity alpha {}); acoustic Courant "
+                       "limit\n",
+                       soundSpeed > 0 ? fmt::format("{:.4g} m/s", soundSpeed) : std::string("from the scene"),
+                       densityDiffusion > 0 ? fmt::format("delta = {}", densityDiffusion) : std::string("off"),
+                       artificialViscosity);
+  } else {
+    out += "    method: incompressible SPH, projection (Chorin; Eqs. 6-11)\n";
+  }
   out += fmt::format("    kernel {} with h = {} dx, gradient correction {}\n", kernel, hOverDx,
                      kernelCorrection ? "on" : "off");
   out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,

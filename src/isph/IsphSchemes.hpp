@@ -2,6 +2,15 @@
 // How the equations are discretised: system/isphSchemes. Every keyword has a default that
 // is echoed in the log; unknown keywords get a "did you mean" warning.
 //
+//   method           isph;           // | wcsph: the projection (the paper's method), or the explicit
+//                                    // weakly-compressible baseline (WeaklyCompressibleStep.hpp)
+//   wcsph            { soundSpeed 20; densityDiffusion 0.1; artificialViscosity 0.1; }
+//                    soundSpeed [m/s]: c0 of the equation of state (default 10 sqrt(2 |g| H), H the
+//                    height of the scene: 10x the speed of a free fall over it); densityDiffusion:
+//                    δ of δ-SPH (0: off); artificialViscosity: Monaghan's α (0: off; with 0.01 the
+//                    tank at rest of hydrostaticTank was 2-3 times noisier). With wcsph the
+//                    deviatoric term is explicit and controlDict's maxCo is the acoustic Courant
+//                    number, dt ≤ maxCo h/(c0 + |u|max); the PPE and free-surface keywords are unused.
 //   kernel           WendlandC2;     // | cubicSpline
 //   hOverDx          1.3;
 //   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
@@ -36,12 +45,18 @@
 
 namespace isph {
 
+enum class Method { isph, wcsph };
 enum class PpeSource { densityInvariant, divergence, mixed };
 enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
 enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
 
 struct IsphSchemes {
+  Method method = Method::isph;
+  double soundSpeed = 0;             // m/s (wcsph); 0: from the scene, set by the solver
+  double densityDiffusion = 0.1;     // δ (wcsph)
+  double artificialViscosity = 0.1;  // α (wcsph)
+
   std::string kernel = "WendlandC2";
   double hOverDx = 1.3;
   bool kernelCorrection = true;

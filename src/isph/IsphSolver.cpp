@@ -101,6 +101,21 @@ IsphSolver::IsphSolver(const Time& time) {
   freshStart_ = std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
                             [](double v) { return v == 0.0; });
   initialiseWallPressure();
+  if (schemes_.method == Method::wcsph) {
+    if (schemes_.soundSpeed <= 0) schemes_.soundSpeed = defaultSoundSpeed(ps_, g_);
+    if (!(schemes_.soundSpeed > 0)) {
+      fatalError("method wcsph: a scene at rest without gravity has no speed scale for the default sound speed; "
+                 "give one in system/isphSchemes, e.g. wcsph { soundSpeed 20; }");
+    }
+    wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_, schemes_.soundSpeed);
+    if (freshStart_) {  // the walls' densities from the hydrostatic extrapolation of the material's pressure
+      ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+      prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
+      std::vector<Vec3> atRest(ps_.nMaterial, g_);  // u* = g dt with dt = 1
+      updateWallPressure(ps_, atRest, g_, 1.0);
+    }
+    wcsph_->initialiseDensity(ps_);
+  }
 
   freeSurface_ = std::make_unique<FreeSurfaceDetector>(
       schemes_.freeSurfaceThreshold, schemes_.freeSurfaceGradient, schemes_.minNeighbourFraction,
@@ -121,7 +136,8 @@ IsphSolver::IsphSolver(const Time& time) {
        ps_.nWall, ps_.nDummy, ps_.dx, kernel_->h());
   for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
   for (const auto& p : ps_.cloud.properties.patches) {
-    info("    wall patch {}: no penetration (Neumann wall pressure); fluids stick; granular material {}", p.name,
+    info("    wall patch {}: no penetration ({}); fluids stick; granular material {}", p.name,
+         wcsph_ ? "dynamic boundary particles" : "Neumann wall pressure",
          p.frictionAngle > 0 && friction_->active()
              ? fmt::format("slides with Coulomb friction, angle {} deg (tan = {:.4g}), sticking below {:.3g} m/s",
                            p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), schemes_.frictionSlipSpeed)
@@ -259,7 +275,11 @@ TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
       maxNu = maxNu_;
     }
   }
-  const double force = g_.norm() + maxViscousAcceleration_;
+  double force = g_.norm() + maxViscousAcceleration_;
+  if (wcsph_) {  // the acoustic Courant limit, and the force limit from the whole acceleration
+    maxSpeed += wcsph_->soundSpeed();
+    force = std::max(force, maxAcceleration_);
+  }
   const double previous = time.timeIndex() > 0 ? time.deltaT() : 0.0;
   return timeStepLimits(kernel_->h(), maxSpeed, time.settings().maxCo, force, schemes_.forceFactor, maxNu,
                         schemes_.viscousFactor, previous, schemes_.maxGrowth, time.settings().maxDeltaT);
@@ -267,6 +287,7 @@ TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
 
 StepReport IsphSolver::step(const Time& time) {
   ++stepsTaken_;
+  if (wcsph_) return stepWeaklyCompressible(time);
   const double dt = time.deltaT();
   StepReport report;
   {
@@ -314,23 +335,89 @@ StepReport IsphSolver::step(const Time& time) {
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
       ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
     }
-    if (schemes_.shifting) {
-      report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_, dt).maxShift;
-    }
-    report.collisions = separateCloseParticles(ps_, schemes_.collisionDistance).moved;
-    const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);
-    report.wallSafeguard = guard.moved;
-    report.wallCrossings = guard.crossed;
-    if (guard.crossed > 0 && totalWallCrossings_ == 0) {
-      warning(fmt::format("first wall crossing at time {}: {} ({} particle(s) this step)", time.timeName(),
-                          guard.firstCrossing, guard.crossed));
-    }
-    totalWallCrossings_ += guard.crossed;
+    finishStep(time, report);
   }
+  return report;
+}
+
+StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
+  const double dt = time.deltaT();
+  const double h = kernel_->h();
+  StepReport report;
+  report.ppe.converged = true;  // no PPE: nothing for stepWithRetry to redo
+  {
+    auto t = timer_.scope("neighbour search");
+    if (stepsSinceReorder_++ % reorderInterval == 0) {
+      wcsph_->permute(reorderMaterialParticles(ps_, kernel_->supportRadius()));
+    }
+    ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+  }
+  {
+    auto t = timer_.scope("kernel and corrections");  // the strain rate's corrected gradients
+    correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
+    if (schemes_.shifting) {  // only the shifting needs the free surface
+      freeSurface_->detect(ps_);
+      report.freeSurface = freeSurface_->nSurfaceMaterial();
+    }
+  }
+  {
+    auto t = timer_.scope("rheology");
+    updateRheology();
+  }
+  {
+    auto t = timer_.scope("forces and density");
+    wcsph_->updatePressure(ps_);  // p^n from ρ^n
+    {  // the walls' pressures for the force routine and the friction: the material's, extrapolated
+      prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
+      const std::vector<Vec3> atRest(ps_.nMaterial, Vec3(dt * g_));
+      updateWallPressure(ps_, atRest, g_, dt);
+    }
+    const std::vector<double> rate = wcsph_->densityRate(ps_, *kernel_, g_, h);
+    // g and the explicit deviatoric term (Eq. 6 as written), then pressure and artificial viscosity.
+    maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, h, ustar_);
+    const long n = static_cast<long>(ps_.nMaterial);
+#pragma omp parallel for schedule(static)
+    for (long ia = 0; ia < n; ++ia) {
+      const auto a = static_cast<std::size_t>(ia);
+      ustar_[a] += dt * (wcsph_->pressureForce(ps_, *kernel_, a) + wcsph_->artificialViscosity(ps_, h, a));
+    }
+    // Coulomb friction, limited by the wall pressures (as the explicit projection step does).
+    friction_->update(ps_);
+    if (friction_->active()) friction_->applyExplicit(ps_, dt, ustar_);
+    maxAcceleration_ = 0;
+    for (std::size_t a = 0; a < ps_.nMaterial; ++a) {  // symplectic Euler: u, then x with the new u
+      maxAcceleration_ = std::max(maxAcceleration_, (ustar_[a] - ps_.cloud.U[a]).norm() / dt);
+      ps_.cloud.U[a] = ustar_[a];
+      ps_.cloud.positions[a] += dt * ps_.cloud.U[a];
+    }
+    wcsph_->advanceDensity(rate, dt);
+    wcsph_->updatePressure(ps_);  // p^{n+1}: what is written
+    report.densityVariation = wcsph_->maxDensityVariation(ps_);
+  }
+  {
+    auto t = timer_.scope("shifting and safeguards");
+    finishStep(time, report);
+  }
+  return report;
+}
+
+void IsphSolver::finishStep(const Time& time, StepReport& report) {
+  const double dt = time.deltaT();
+  if (schemes_.shifting) {
+    report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_, dt).maxShift;
+  }
+  report.collisions = separateCloseParticles(ps_, schemes_.collisionDistance).moved;
+  const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);
+  report.wallSafeguard = guard.moved;
+  report.wallCrossings = guard.crossed;
+  if (guard.crossed > 0 && totalWallCrossings_ == 0) {
+    warning(fmt::format("first wall crossing at time {}: {} ({} particle(s) this step)", time.timeName(),
+                        guard.firstCrossing, guard.crossed));
+  }
+  totalWallCrossings_ += guard.crossed;
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) report.maxSpeed = std::max(report.maxSpeed, ps_.cloud.U[a].norm());
   report.courant = report.maxSpeed * dt / kernel_->h();
   checkDomain(time);
-  return report;
 }
 
 void IsphSolver::checkDomain(const Time& time) const {

@@ -3,7 +3,9 @@
 // stages over small single-purpose classes:
 //   neighbours → kernel correction → free surface → u* (Eq. 6) → PPE (Eqs. 8/10) →
 //   velocity correction (Eq. 11) → move → shift → wall safeguard
-// The solver owns the particles; the application's main owns the time loop.
+// or, with isphSchemes `method wcsph;`, the explicit weakly-compressible step over the same
+// pieces (WeaklyCompressibleStep.hpp). The solver owns the particles; the application's main
+// owns the time loop.
 //
 // Incremental projection (isphSchemes `incrementalPressure granular|all;`, default none; only
 // with the semi-implicit viscous term): the viscous solve of u* sees the pressure force of the
@@ -34,6 +36,7 @@
 #include "isph/StrainRate.hpp"
 #include "isph/WallFriction.hpp"
 #include "isph/TimeStepControl.hpp"
+#include "isph/WeaklyCompressibleStep.hpp"
 
 namespace isph {
 
@@ -45,6 +48,7 @@ struct StepReport {
   std::size_t wallSafeguard = 0;
   std::size_t wallCrossings = 0;  // this step
   double maxShift = 0;  // in dx
+  double densityVariation = -1;  // wcsph: the largest |ρ/ρ0 − 1| of the material (−1: isph)
   double maxSpeed = 0;
   double courant = 0;
 };
@@ -84,6 +88,10 @@ class IsphSolver {
   // Strain rate and η of the material particles at the current state (empty η if inviscid).
   void updateRheology();
   void intermediateVelocity(const Time& time, StepReport& report);
+  // The weakly-compressible step (method wcsph) in place of the projection.
+  StepReport stepWeaklyCompressible(const Time& time);
+  // After the particles moved: shifting, minimum distance, wall safeguard, speed, domain.
+  void finishStep(const Time& time, StepReport& report);
 
   std::size_t totalWallCrossings_ = 0;
   IsphSchemes schemes_;
@@ -107,6 +115,8 @@ class IsphSolver {
   double maxNu_ = 0;          // the largest η/ρ of the last step (explicit viscous limit)
   std::unique_ptr<WallFriction> friction_;
   std::unique_ptr<ImplicitViscousStep> viscous_;
+  std::unique_ptr<WeaklyCompressibleStep> wcsph_;  // method wcsph (null: the projection)
+  double maxAcceleration_ = 0;  // wcsph: the largest |du/dt| of the last step (force limit)
   std::vector<scalar> pStart_;  // p at the step start (restored when the PPE fails)
   Vec3 domainMin_, domainMax_;
   double maxViscousAcceleration_ = 0;

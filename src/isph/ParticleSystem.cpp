@@ -110,7 +110,7 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
   }
 }
 
-void reorderMaterialParticles(ParticleSystem& ps, double cellSize) {
+std::vector<int> reorderMaterialParticles(ParticleSystem& ps, double cellSize) {
   std::vector<Vec3> x(ps.cloud.positions.begin(), ps.cloud.positions.begin() + static_cast<long>(ps.nMaterial));
   const std::vector<int> materialOrder = cellOrder(x, cellSize, ps.dimension);
   std::vector<int> order(ps.size());
@@ -122,6 +122,7 @@ void reorderMaterialParticles(ParticleSystem& ps, double cellSize) {
     ps.rho[i] = rho[static_cast<std::size_t>(order[i])];
     ps.volume[i] = vol[static_cast<std::size_t>(order[i])];
   }
+  return materialOrder;
 }
 
 }  // namespace isph

@@ -43,7 +43,8 @@ struct ParticleSystem {
 // dummy-to-wall association. FatalError if the cloud has no material particles.
 void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials, const Kernel& kernel);
 
-// Reorders the material particles by cell so that neighbours sit close in memory.
-void reorderMaterialParticles(ParticleSystem& ps, double cellSize);
+// Reorders the material particles by cell so that neighbours sit close in memory. Returns
+// the permutation of the material particles, order[new] = old, for the callers' own arrays.
+std::vector<int> reorderMaterialParticles(ParticleSystem& ps, double cellSize);
 
 }  // namespace isph

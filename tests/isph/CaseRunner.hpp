@@ -81,6 +81,12 @@ class CaseRunner {
     std::ofstream(dir_ / file) << edited;
   }
 
+  // Appends `text` to a case file (e.g. an entry at the end of a dictionary).
+  void append(const std::string& file, const std::string& text) {
+    ASSERT_TRUE(std::filesystem::exists(dir_ / file)) << file << " not found";
+    std::ofstream(dir_ / file, std::ios::app) << "\n" << text << "\n";
+  }
+
   // Runs an application in the case; returns its exit code (its log is log.<name>).
   int run(const std::string& exe, const std::string& name, const std::string& options = "") const {
     const std::string cmd = "'" + exe + "' " + options + " -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";

@@ -63,15 +63,18 @@ double frontSpeed(const std::vector<Point>& data, double T0, double T1) {
   return (n * sTZ - sT * sZ) / (n * sTT - sT * sT);
 }
 
-TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
+// The same case and the same checks for both methods: the projection (the default) and the
+// explicit weakly-compressible baseline (isphSchemes method wcsph, its default sound speed).
+void checkSurgeFront(const std::string& name, const std::string& schemesEntry) {
   const auto measured = measuredSeriesB();
   ASSERT_GE(measured.size(), 10u) << "validation data not found";
 
-  CaseRunner c("damBreak", "damBreak");
+  CaseRunner c("damBreak", name);
   const double a = 0.05715, dx = a / 10, g = 9.81, writeInterval = 0.01;
   c.set("system/particleMeshDict", "spacing", std::to_string(dx));
   c.set("system/controlDict", "endTime", "0.2");
   c.set("system/controlDict", "writeInterval", std::to_string(writeInterval));
+  if (!schemesEntry.empty()) c.append("system/isphSchemes", schemesEntry);
   ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
   ASSERT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << c.path() / "log.isphLandslideFoam";
   EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
@@ -99,6 +102,12 @@ TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) {
               100 * maxRelError, speed, speedMeasured, 100 * (speed / speedMeasured - 1));
   EXPECT_LT(maxRelError, 0.12) << "surge front against the experiment for T <= 3";
   EXPECT_NEAR(speed / speedMeasured, 1.0, 0.10) << "front speed fitted over 1.2 <= T <= 3.3";
+}
+
+TEST(DamBreak, SurgeFrontFollowsMartinAndMoyce) { checkSurgeFront("damBreak", ""); }
+
+TEST(DamBreak, WeaklyCompressibleSurgeFrontFollowsMartinAndMoyce) {
+  checkSurgeFront("damBreakWcsph", "method wcsph;");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // system/isphSchemes as the solver reads it: the bed-drag passes of wallFriction (default,
-// given, out of range with the keyword's line).
+// given, out of range with the keyword's line); the method (isph, or the weakly-compressible
+// baseline with its sub-dictionary and its explicit viscous term).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -36,6 +37,53 @@ TEST(IsphSchemes, ZeroWallFrictionPassesAreAnErrorAtTheirLine) {
     EXPECT_NE(m.find("[1, 20]"), std::string::npos) << m;
     EXPECT_EQ(e.where().line, 4) << "the line of the keyword";
   }
+}
+
+TEST(IsphSchemes, MethodDefaultsToTheProjectionWithTheImplicitViscousTerm) {
+  const IsphSchemes s = schemesFrom("");
+  EXPECT_EQ(s.method, Method::isph);
+  EXPECT_EQ(s.viscousTerm, ViscousTerm::implicit);
+  EXPECT_NE(s.describe().find("incompressible SPH, projection"), std::string::npos) << s.describe();
+}
+
+TEST(IsphSchemes, WeaklyCompressibleMethodIsExplicitWithItsDefaults) {
+  const IsphSchemes s = schemesFrom("method wcsph;\n");
+  EXPECT_EQ(s.method, Method::wcsph);
+  EXPECT_EQ(s.viscousTerm, ViscousTerm::explicit_);
+  EXPECT_EQ(s.soundSpeed, 0.0) << "0: from the scene";
+  EXPECT_EQ(s.densityDiffusion, 0.1);
+  EXPECT_EQ(s.artificialViscosity, 0.1);
+  EXPECT_NE(s.describe().find("weakly-compressible SPH"), std::string::npos) << s.describe();
+}
+
+TEST(IsphSchemes, WeaklyCompressibleEntriesAreRead) {
+  const IsphSchemes s =
+      schemesFrom("method wcsph;\nwcsph { soundSpeed 25; densityDiffusion 0; artificialViscosity 0.02; }\n");
+  EXPECT_EQ(s.soundSpeed, 25.0);
+  EXPECT_EQ(s.densityDiffusion, 0.0);
+  EXPECT_EQ(s.artificialViscosity, 0.02);
+  EXPECT_NE(s.describe().find("sound speed 25 m/s"), std::string::npos) << s.describe();
+  EXPECT_NE(s.describe().find("density diffusion off"), std::string::npos) << s.describe();
+}
+
+TEST(IsphSchemes, ImplicitViscousTermWithWeaklyCompressibleIsAnErrorAtItsLine) {
+  try {
+    schemesFrom("method wcsph;\n\nviscousTerm implicit;\n");
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("'viscousTerm'"), std::string::npos) << m;
+    EXPECT_NE(m.find("method isph"), std::string::npos) << m;
+    EXPECT_EQ(e.where().line, 3);
+  }
+}
+
+TEST(IsphSchemes, NegativeSoundSpeedIsAnError) {
+  EXPECT_THROW(schemesFrom("method wcsph;\nwcsph { soundSpeed -1; }\n"), FatalError);
+}
+
+TEST(IsphSchemes, UnknownMethodIsAnError) {
+  EXPECT_THROW(schemesFrom("method sph;\n"), FatalError);
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 // isphLandslideFoam: incompressible SPH for flow-like landslides (the paper's projection
 // method, Eqs. 6-11). Reads the particles of the start time, steps them to endTime and
 // writes time directories as system/controlDict says; every time directory is a restart.
+// With isphSchemes `method wcsph;` it runs the explicit weakly-compressible baseline instead.
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
+#include <fmt/format.h>
+
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/time/ProgressReporter.hpp"
@@ -38,11 +41,13 @@ void run(const isph::ArgList& args) {
                time.settings().adjustTimeStep ? limits.limiting() : "fixed");
     const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step
     for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
-    isph::logSolverPerformance(report.ppe);
+    if (!report.ppe.field.empty()) isph::logSolverPerformance(report.ppe);  // none with method wcsph
     isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  collisions {}  wall safeguard {}  "
-               "wall crossings {}",
+               "wall crossings {}{}",
                report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.collisions, report.wallSafeguard,
-               report.wallCrossings);
+               report.wallCrossings,
+               report.densityVariation >= 0 ? fmt::format("  max density variation {:.3g}%", 100 * report.densityVariation)
+                                            : std::string());
     if (time.writeTime()) {
       solver.write(time);
       isph::info("    wrote time {}", time.timeName());
