@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
+#include <unordered_map>
 
 #include "core/Log.hpp"
 #include "core/fields/FieldIO.hpp"
@@ -58,6 +59,13 @@ IsphSolver::IsphSolver(const Time& time) {
   info("Reading cloud '{}' from {}", cloudName, time.timeName());
   ps_.cloud = readCloud(time.timePath(), cloudName);
   const int dim = ps_.cloud.properties.dimension;
+  // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
+  // reordered below.
+  std::unordered_map<label, double> writtenDensity;
+  if (const auto file = time.timePath() / "lagrangian" / cloudName / "rho"; std::filesystem::is_regular_file(file)) {
+    const auto rho = readField<scalar>(file, ps_.cloud.size());
+    for (std::size_t i = 0; i < rho.size(); ++i) writtenDensity[ps_.cloud.origId[i]] = rho[i];
+  }
 
   info("\nReading system/isphSchemes");
   schemes_ = IsphSchemes::read(readOptional(caseDir / "system" / "isphSchemes", "system/isphSchemes"), dim);
@@ -114,7 +122,14 @@ IsphSolver::IsphSolver(const Time& time) {
       std::vector<Vec3> atRest(ps_.nMaterial, g_);  // u* = g dt with dt = 1
       updateWallPressure(ps_, atRest, g_, 1.0);
     }
-    wcsph_->initialiseDensity(ps_);
+    if (writtenDensity.size() == ps_.size()) {  // a restart of a weakly-compressible run
+      std::vector<double> rho(ps_.size());
+      for (std::size_t i = 0; i < ps_.size(); ++i) rho[i] = writtenDensity.at(ps_.cloud.origId[i]);
+      wcsph_->setDensity(std::move(rho));
+      info("    densities of the weakly-compressible state read from {}", time.timeName());
+    } else {
+      wcsph_->initialiseDensity(ps_);
+    }
   }
 
   freeSurface_ = std::make_unique<FreeSurfaceDetector>(
@@ -453,6 +468,7 @@ void IsphSolver::write(Time& time) {
   if (const auto* tau = deviatoricStress()) {
     writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", *tau, options);
   }
+  if (wcsph_) writeField(dir.path() / "lagrangian" / ps_.cloud.name / "rho", wcsph_->density(), options);
   time.writeTimeState(dir.path());
   dir.commit();
   time.purgeOldWrites();

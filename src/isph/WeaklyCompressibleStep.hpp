@@ -33,8 +33,9 @@
 //
 // Advanced by symplectic Euler (u first, then x with the new u, and ρ with the rate at time
 // n). The time step is the acoustic one, dt ≤ maxCo h/(c0 + |u|max), besides the force and
-// the explicit viscous limits. The densities are the state: a restart (which has only p)
-// takes ρ = ρ0 + p/c0², which forgets any dilation below ρ0 that the tension cut-off hid.
+// the explicit viscous limits. The densities are the state: every time directory holds them
+// (field rho, all particles), so that a restart continues the run; a case without it (from
+// particleMesh, or from a projection run) starts from ρ = ρ0 + p/c0².
 #include <vector>
 
 #include "core/Types.hpp"
@@ -52,6 +53,9 @@ class WeaklyCompressibleStep {
   double soundSpeed() const { return c0_; }
   // ρ from the pressures of all particles (the start and a restart).
   void initialiseDensity(const ParticleSystem& ps);
+  // The densities of a restart (field rho of the time directory), in the particles' order.
+  void setDensity(std::vector<double> rho) { density_ = std::move(rho); }
+  const std::vector<double>& density() const { return density_; }
   // Follows the cell reordering of the material particles (order[new] = old).
   void permute(const std::vector<int>& order);
   // p = c0² (ρ − ρ0) of particle a (walls: p ≥ 0).
