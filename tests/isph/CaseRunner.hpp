@@ -88,8 +88,11 @@ class CaseRunner {
   }
 
   // Runs an application in the case; returns its exit code (its log is log.<name>).
-  int run(const std::string& exe, const std::string& name, const std::string& options = "") const {
-    const std::string cmd = "'" + exe + "' " + options + " -case '" + dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
+  // `environment`: assignments put before the command, e.g. "OMP_NUM_THREADS=2".
+  int run(const std::string& exe, const std::string& name, const std::string& options = "",
+          const std::string& environment = "") const {
+    const std::string cmd = (environment.empty() ? "" : environment + " ") + "'" + exe + "' " + options + " -case '" +
+                            dir_.string() + "' > '" + (dir_ / ("log." + name)).string() + "' 2>&1";
     const int rc = std::system(cmd.c_str());
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
   }
