@@ -408,6 +408,16 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
     wcsph_->advanceDensity(rate, dt);
     wcsph_->updatePressure(ps_);  // p^{n+1}: what is written
     report.densityVariation = wcsph_->maxDensityVariation(ps_);
+    const auto [compression, a] = wcsph_->maxCompression(ps_);
+    if (compression > WeaklyCompressibleStep::maxAllowedCompression) {
+      fatalError(fmt::format("the weakly-compressible run lost its weak compressibility at time {}: particle {} "
+                             "(origId {}) at ({:.4g} {:.4g}) is compressed by {:.3g}% (more than {:.0f}%).\n    The "
+                             "last written time directory is intact; the flow is faster than the sound speed {:.4g} "
+                             "m/s allows (raise wcsph soundSpeed), or the run is unstable (lower maxCo).",
+                             time.timeName(), a, ps_.cloud.origId[a], ps_.cloud.positions[a].x(),
+                             ps_.cloud.positions[a].y(), 100 * compression,
+                             100 * WeaklyCompressibleStep::maxAllowedCompression, wcsph_->soundSpeed()));
+    }
   }
   {
     auto t = timer_.scope("shifting and safeguards");

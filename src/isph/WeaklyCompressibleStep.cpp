@@ -139,6 +139,15 @@ double WeaklyCompressibleStep::maxDensityVariation(const ParticleSystem& ps) con
   return v;
 }
 
+std::pair<double, std::size_t> WeaklyCompressibleStep::maxCompression(const ParticleSystem& ps) const {
+  std::pair<double, std::size_t> worst{-1e300, 0};
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    const double c = density_[a] / ps.rho[a] - 1;
+    if (c > worst.first) worst = {c, a};
+  }
+  return worst;
+}
+
 double defaultSoundSpeed(const ParticleSystem& ps, const Vec3& g) {
   double speed = 0;
   for (std::size_t a = 0; a < ps.nMaterial; ++a) speed = std::max(speed, ps.cloud.U[a].norm());

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -110,4 +111,20 @@ TEST(DamBreak, WeaklyCompressibleSurgeFrontFollowsMartinAndMoyce) {
   checkSurgeFront("damBreakWcsph", "method wcsph;");
 }
 
+}  // namespace
+
+// A sound speed far too low for the flow: the run stops with the reason (and its remedy)
+// instead of going on with a compressible flow (issue 8: the solver reports why a method fails).
+namespace {
+TEST(DamBreak, WeaklyCompressibleRunStopsWhenItLosesItsWeakCompressibility) {
+  CaseRunner c("damBreak", "damBreakWcsphSlowSound");
+  c.set("system/particleMeshDict", "spacing", std::to_string(0.05715 / 10));
+  c.append("system/isphSchemes", "method wcsph;\nwcsph { soundSpeed 2; }");
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
+  EXPECT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 1);
+  std::ifstream in(c.path() / "log.isphLandslideFoam");
+  const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(log.find("lost its weak compressibility"), std::string::npos) << log.substr(log.size() > 2000 ? log.size() - 2000 : 0);
+  EXPECT_NE(log.find("raise wcsph soundSpeed"), std::string::npos);
+}
 }  // namespace
