@@ -9,6 +9,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/ResourceUsage.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
 #include "isph/IsphSolver.hpp"
@@ -61,6 +62,8 @@ void run(const isph::ArgList& args) {
   }
   progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
+  isph::info("Mean neighbours per particle (last step): {:.1f}", solver.particles().neighbours.meanNeighbours());
+  isph::info("Peak memory (resident): {:.1f} MB", isph::peakResidentMegabytes());
   isph::info("Time spent per phase:\n{}", solver.timer().table());
 }
 
