@@ -215,7 +215,11 @@ const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
   if (tauStep_ != stepsTaken_) {
     // τ = 2 η D at the state after the step (what is written, what toVTK shows and what the
     // wall force integrates), once per step however many callers ask.
+    // (The time step must not depend on whether a function object or a write asked: the
+    // viscous limit keeps the η of the step itself.)
+    const double maxNu = maxNu_;
     updateRheology();
+    maxNu_ = maxNu;
     tau_ = isph::deviatoricStress(ps_, strain_, eta_);
     tauStep_ = stepsTaken_;
   }

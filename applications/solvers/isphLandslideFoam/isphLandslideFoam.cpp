@@ -55,8 +55,11 @@ void run(const isph::ArgList& args) {
     }
     // The state as written now: the deviatoric stress after the step, the neighbours found
     // afresh over the moved particles (as sampleForces does on the written time).
-    functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
-                             .kernel = &solver.kernel(), .neighbours = nullptr});
+    // (Only when one is due: the stress is a second strain-rate pass, not to be paid every step.)
+    if (functions.anyDue(time)) {
+      functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
+                               .kernel = &solver.kernel(), .neighbours = nullptr});
+    }
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);
   }

@@ -25,6 +25,13 @@ FunctionObjectList::FunctionObjectList(const Dictionary& functions, const Time& 
   for (const auto& f : objects_) info("    {}", f->describe());
 }
 
+bool FunctionObjectList::anyDue(const Time& time) const {
+  for (const auto& f : objects_) {
+    if (f->due(time)) return true;
+  }
+  return false;
+}
+
 void FunctionObjectList::execute(const Time& time, const SolverState& state) {
   for (auto& f : objects_) {
     if (f->due(time)) f->execute(time, state);

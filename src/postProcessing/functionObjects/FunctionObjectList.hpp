@@ -20,6 +20,8 @@ class FunctionObjectList {
   std::size_t size() const { return objects_.size(); }
   const FunctionObject& operator[](std::size_t i) const { return *objects_[i]; }
 
+  // Whether some function object is due at this step (the solver then computes what they read).
+  bool anyDue(const Time& time) const;
   void execute(const Time& time, const SolverState& state);
 
  private:

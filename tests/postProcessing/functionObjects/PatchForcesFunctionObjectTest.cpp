@@ -88,6 +88,23 @@ TEST_F(FunctionObjects, PatchForcesWritesEveryNStepsPerMetreOrOverTheWidth) {
 TEST_F(FunctionObjects, NoFunctionsIsAnEmptyList) {
   Time time(dir.path());
   EXPECT_EQ(FunctionObjectList(time).size(), 0u);
+  ++time;
+  EXPECT_FALSE(FunctionObjectList(time).anyDue(time)) << "nothing to compute for an empty list";
+}
+
+// anyDue: the solver computes the deviatoric stress only at the steps where some function
+// object will read it.
+TEST_F(FunctionObjects, AnyDueFollowsTheWriteIntervals) {
+  Time time(dir.path());
+  FunctionObjectList functions(functionsDict("every3 { type patchForces; patches (bed); writeInterval 3; }\n"
+                                             "every2 { type patchForces; patches (bed); writeInterval 2; }"),
+                               time);
+  std::string due;
+  for (int step = 1; step <= 7; ++step) {
+    ++time;
+    due += functions.anyDue(time) ? '1' : '0';
+  }
+  EXPECT_EQ(due, "0111010") << "steps 2, 3, 4, 6 (of 1-7)";
 }
 
 TEST_F(FunctionObjects, UnknownTypeListsTheAvailableTypes) {
