@@ -41,7 +41,7 @@ LithostaticSpec spec() {
   return s;
 }
 
-TEST(Lithostatic, AnExactLithostaticLayerHasNoError) {
+TEST(LithostaticError, AnExactLithostaticLayerHasNoError) {
   const LithostaticError e = lithostaticError(layer(), spec());
   EXPECT_NEAR(e.surface, 0.095, 1e-12);
   EXPECT_LT(e.l2, 1e-12);
@@ -49,7 +49,7 @@ TEST(Lithostatic, AnExactLithostaticLayerHasNoError) {
   EXPECT_EQ(e.interior, 30u * 8u) << "30 columns inside 0.15 < x < 0.45, 8 rows deeper than 0.015 m";
 }
 
-TEST(Lithostatic, AScaledPressureGivesItsL2ErrorAndAnInteriorBumpItsSpread) {
+TEST(LithostaticError, AScaledPressureGivesItsL2ErrorAndAnInteriorBumpItsSpread) {
   ParticleCloud c = layer();
   for (std::size_t i = 0; i < c.size(); ++i)
     if (c.kind[i] == 0) c.p[i] *= 1.1;
@@ -65,7 +65,7 @@ TEST(Lithostatic, AScaledPressureGivesItsL2ErrorAndAnInteriorBumpItsSpread) {
   EXPECT_GT(e.l2, 0.0);
 }
 
-TEST(Lithostatic, DepthIsAlongTheNormalAndGravityItsComponentIntoTheBed) {
+TEST(LithostaticError, DepthIsAlongTheNormalAndGravityItsComponentIntoTheBed) {
   // The same layer turned so that its bed normal is +x: the pressure is unchanged.
   ParticleCloud c = layer();
   for (auto& r : c.positions) r = Vec3(r.y(), -r.x(), 0);
@@ -77,7 +77,7 @@ TEST(Lithostatic, DepthIsAlongTheNormalAndGravityItsComponentIntoTheBed) {
   EXPECT_LT(lithostaticError(c, s).l2, 1e-12);
 }
 
-TEST(Lithostatic, LargestDisplacementMatchesParticlesById) {
+TEST(LithostaticError, LargestDisplacementMatchesParticlesById) {
   const ParticleCloud start = layer();
   ParticleCloud end = layer();
   end.positions[17] += Vec3(0.003, -0.004, 0);
@@ -91,7 +91,7 @@ TEST(Lithostatic, LargestDisplacementMatchesParticlesById) {
   EXPECT_THROW(largestDisplacement(start, end), FatalError);
 }
 
-TEST(Lithostatic, BadInputIsAFatalError) {
+TEST(LithostaticError, BadInputIsAFatalError) {
   LithostaticSpec s = spec();
   s.rho = 0;
   EXPECT_THROW(lithostaticError(layer(), s), FatalError);
