@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# sampleForces and toVTK as a user runs them: outputs, -plot with and without gnuplot, and
+# sampleForces, toVTK and sampleLithostatic as a user runs them: outputs, -plot with and without gnuplot, and
 # errors that name the file, line and keyword. Usage: testPostProcessingUtilities.sh <bindir> <cases>
 set -u
 bin=$1
@@ -65,6 +65,28 @@ out=$("$bin/toVTK" -case "$work/tank" -time 7 2>&1); rc=$?
 check "a time that does not exist warns and writes nothing new" bash -c "[ $rc -eq 0 ] && grep -q 'no time directory selected' <<< \"\$1\"" _ "$out"
 out=$("$bin/toVTK" -case "$work/tank" -cloud sand 2>&1); rc=$?
 check "a missing cloud is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q \"cloud 'sand' not found\" <<< \"\$1\"" _ "$out"
+
+# sampleLithostatic on the tank at rest (0 and its copy 0.5): water at rest is lithostatic
+cat > "$work/tank/system/sampleLithostaticDict" <<EOF
+FoamFile { version 2.0; format ascii; class dictionary; object sampleLithostaticDict; }
+rho      1000;
+height   1;
+xMin     0.1;
+xMax     0.3;
+minDepth 0.1;
+EOF
+"$bin/sampleLithostatic" -case "$work/tank" > "$work/log5" 2>&1
+check "sampleLithostatic runs on every time" test $? -eq 0
+lith="$work/tank/postProcessing/sampleLithostatic/0/lithostatic.dat"
+check "... a row per time, no displacement, p of the tank within 5 % of lithostatic" \
+  awk '!/^#/ { n++; if (!($2 < 0.05 && $3 < 0.05 && $4 == 0)) bad++ } END { exit !(n == 2 && !bad) }' "$lith"
+sed -i 's/^rho .*/rho -1000;/' "$work/tank/system/sampleLithostaticDict"
+out=$("$bin/sampleLithostatic" -case "$work/tank" 2>&1); rc=$?
+check "a negative rho is an error naming it, the file and the line" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'rho: expected a positive density' <<< \"\$1\" && grep -q 'sampleLithostaticDict, line' <<< \"\$1\"" _ "$out"
+rm "$work/tank/system/sampleLithostaticDict"
+out=$("$bin/sampleLithostatic" -case "$work/tank" 2>&1); rc=$?
+check "a missing sampleLithostaticDict is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q 'sampleLithostaticDict' <<< \"\$1\"" _ "$out"
 
 echo "$((total - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]

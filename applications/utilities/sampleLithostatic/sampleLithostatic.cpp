@@ -1,0 +1,97 @@
+// sampleLithostatic: how far a granular layer at rest is from the infinite-slope
+// (lithostatic) pressure p = rho |g| cos(beta) depth, for the selected times, as
+// system/sampleLithostaticDict says (gravity from constant/g):
+//
+//   rho        1800;        // the material's density [kg/m^3]
+//   height     0.1;         // H: the spread is given as a fraction of rho |g| H [m]
+//   normal     (0 1 0);     // optional: the bed normal, out of the layer (default y)
+//   xMin       0.15;        // optional: the interior along x, away from the end walls [m]
+//   xMax       0.45;
+//   minDepth   0.01;        // optional: the interior is deeper than this [m] (default 0)
+//   reference  0;           // optional: the time whose cloud the displacement is measured
+//                           // from (default: the first time of the case)
+//
+// (src/postProcessing/sampling/Lithostatic.hpp has the definitions.) Writes
+// postProcessing/sampleLithostatic/<firstTime>/lithostatic.dat: Time [s], the relative L2
+// error of p, the interior spread of (p - p_lith)/(rho |g| H), the largest displacement [m].
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "core/app/Application.hpp"
+#include "core/app/TimeOptions.hpp"
+#include "core/dictionary/Dictionary.hpp"
+#include "core/io/AtomicFile.hpp"
+#include "isph/Gravity.hpp"
+#include "particles/CloudIO.hpp"
+#include "postProcessing/sampling/Lithostatic.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const isph::ApplicationSpec spec{
+    .name = "sampleLithostatic",
+    .description = "Error of the pressure of a layer at rest against the lithostatic one, from system/sampleLithostaticDict.",
+    .options = {{"cloud", "name", "the cloud (default: particles)"}},
+    .arguments = {},
+    .timeOptions = true,
+};
+
+void run(const isph::ArgList& args) {
+  const isph::Dictionary dict = isph::Dictionary::readFile(args.casePath() / "system" / "sampleLithostaticDict");
+  isph::LithostaticSpec s;
+  s.rho = dict.get<double>("rho");
+  if (!(s.rho > 0)) isph::fatalIOError(dict.findEntry("rho")->location(), "rho: expected a positive density");
+  s.height = dict.get<double>("height");
+  if (!(s.height > 0)) isph::fatalIOError(dict.findEntry("height")->location(), "height: expected a positive length");
+  s.normal = dict.getOrDefault("normal", s.normal);
+  if (!(s.normal.norm() > 0)) isph::fatalIOError(dict.findEntry("normal")->location(), "normal: expected a non-zero vector");
+  s.xMin = dict.getOrDefault("xMin", s.xMin);
+  s.xMax = dict.getOrDefault("xMax", s.xMax);
+  if (!(s.xMax > s.xMin)) isph::fatalIOError(dict.findEntry("xMax")->location(), "xMax: expected more than xMin");
+  s.minDepth = dict.getOrDefault("minDepth", s.minDepth);
+  const auto referenceTime = dict.getOptional<double>("reference");
+  dict.checkKeywords();
+  s.g = isph::readGravity(args.casePath());
+
+  const std::string cloudName = args.option("cloud").value_or("particles");
+  const auto all = isph::listTimes(args.casePath());
+  if (all.empty()) isph::fatalError(fmt::format("no time directories in {}", args.casePath().string()));
+  std::string referenceName = all.front().name;
+  if (referenceTime) {
+    const auto picked = isph::selectTimes(all, {.ranges = fmt::format("{}", *referenceTime)});
+    if (picked.empty()) {
+      isph::fatalIOError(dict.findEntry("reference")->location(), fmt::format("reference: no time {} in the case", *referenceTime));
+    }
+    referenceName = picked.front().name;
+  }
+  const auto times = isph::selectedTimes(args);
+  if (times.empty()) return;
+  const isph::ParticleCloud start = isph::readCloud(args.casePath() / referenceName, cloudName);
+
+  std::string text = fmt::format("# p against rho |g| cos(beta) depth, rho {} kg/m^3, g ({} {} {}), normal ({} {} {})\n", s.rho,
+                                 s.g.x(), s.g.y(), s.g.z(), s.normal.x(), s.normal.y(), s.normal.z());
+  text += fmt::format("# spread over {} < x < {}, depth > {} m, in units of rho |g| H, H = {} m; displacement from time {}\n",
+                      s.xMin, s.xMax, s.minDepth, s.height, referenceName);
+  text += "# Time[s] l2[-] spread[-] maxDisplacement[m]\n";
+  for (const auto& time : times) {
+    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
+    const isph::LithostaticError e = isph::lithostaticError(cloud, s);
+    const double moved = isph::largestDisplacement(start, cloud);
+    isph::info("Time = {}  l2 {:.6g}  spread {:.6g}  maxDisplacement {:.6g} m  ({} interior particles)", time.name, e.l2,
+               e.spread, moved, e.interior);
+    text += fmt::format("{} {:.8g} {:.8g} {:.8g}\n", time.value, e.l2, e.spread, moved);
+  }
+  const fs::path out = args.casePath() / "postProcessing" / "sampleLithostatic" / times.front().name / "lithostatic.dat";
+  fs::create_directories(out.parent_path());
+  isph::writeFileAtomic(out, text);
+  isph::info("\nWritten {}", out.string());
+}
+
+}  // namespace
+
+int main(int argc, char* argv[]) { return isph::runApplication(spec, argc, argv, run); }
