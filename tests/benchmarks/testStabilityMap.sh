@@ -1,0 +1,33 @@
+#!/bin/bash
+# The stabilityMap benchmark's classifier on a tiny sweep (Allrun -smoke, on a copy): the base
+# point of the implicit method must come out stable, at C = 2 it must blow up, on a base of
+# 10 degrees (below the 20 degree slope) it must move (creeping), and the explicit plastic
+# term at 1e-4 of the default etaMax must creep; a stable row must carry its measures.
+#   testStabilityMap.sh <project dir> <build dir>
+set -eu
+project=$1
+build=$2
+work=$(mktemp -d /tmp/isphTest-stabilityMap.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+mkdir "$work/stabilityMap"   # the scripts, not a user's runs/
+cp "$project/tutorials/benchmarks/stabilityMap"/{Allrun,classify,plotMaps} "$work/stabilityMap/"
+export ISPH_PROJECT_DIR=$project ISPH_BUILD_DIR=$build
+"$work/stabilityMap/Allrun" -smoke -timeout 40
+csv=$work/stabilityMap/stability.csv
+cat "$csv"
+fail=0
+# outcome <method> <C> <etaMaxFactor> <friction>: the outcome column of that run
+outcome() {
+    awk -F, -v m="$1" -v c="$2" -v e="$3" -v f="$4" '$1 == m && $2 == c && $3 == e && $7 == f { print $8 }' "$csv"
+}
+check() {
+    if [ "$2" = "$3" ]; then echo "ok:   $1: $2"; else echo "FAIL: $1: '$2', expected '$3'"; fail=1; fi
+}
+check "implicit, base point" "$(outcome implicit 0.2 1 30)" stable
+check "implicit, C = 2" "$(outcome implicit 2 1 30)" "blew up"
+check "implicit, base friction 10 < slope 20" "$(outcome implicit 0.2 1 10)" creeping
+check "explicit, C = 0.5, etaMax 1e-4 of the default" "$(outcome explicit 0.5 1e-4 30)" creeping
+# A stable run carries its measures: displacement below dx/4, a pressure spread.
+awk -F, 'NR > 1 && $8 == "stable" && !($22 != "" && $22 < 0.25 && $25 != "" && $25 >= 0) { bad = 1 }
+         END { exit bad }' "$csv" || { echo "FAIL: a stable row without its measures"; fail=1; }
+exit $fail
