@@ -385,8 +385,7 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
   }
   {
     auto t = timer_.scope("forces and density");
-    wcsph_->updatePressure(ps_);  // p^n from ρ^n
-    {  // the walls' pressures for the force routine and the friction: the material's, extrapolated
+    {  // (p^n of the material is the one set from ρ^n at the end of the last step, or read)  // the walls' pressures for the force routine and the friction: the material's, extrapolated
       prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
       const std::vector<Vec3> atRest(ps_.nMaterial, Vec3(dt * g_));
       updateWallPressure(ps_, atRest, g_, dt);

@@ -35,7 +35,6 @@ Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const s
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const double qa = c.p[a] / (ps.rho[a] * ps.rho[a]);
-  const double halfDx = 0.5 * ps.dx;
   Vec3 sum = Vec3::Zero(), reaction = Vec3::Zero();
   for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
     const auto kk = static_cast<std::size_t>(k);
@@ -45,12 +44,10 @@ Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const s
       sum -= mb * (qa + c.p[b] / (ps.rho[b] * ps.rho[b])) * nl.F[kk] * (c.positions[a] - c.positions[b]);
       continue;
     }
-    // The wall layers as if on the material's lattice (half a spacing back along the normal:
-    // the symmetric form is consistent only for a complete lattice, and the wall particles sit
-    // on the wall line, half a spacing closer; as they are, a layer at rest on its bed was
-    // held up by about twice its weight). Their pressure is the wall condition there.
+    // The wall layers as if on the material's lattice (latticePosition: the symmetric form is
+    // consistent only for a complete lattice). Their pressure is the wall condition there.
     const Vec3& n = wallNormal(ps, b);
-    const Vec3 xb = c.positions[b] - halfDx * n;
+    const Vec3 xb = latticePosition(ps, b);
     const Vec3 rba = xb - c.positions[a];
     const double r = rba.norm();
     if (r <= 0 || r >= kernel.supportRadius()) continue;

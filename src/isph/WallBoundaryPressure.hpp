@@ -32,6 +32,14 @@ inline const Vec3& wallNormal(const ParticleSystem& ps, std::size_t b) {
   return ps.isWall(b) ? ps.cloud.normal[b] : ps.cloud.normal[static_cast<std::size_t>(ps.parentWall[b])];
 }
 
+// Where a particle sits as the symmetric sums see it: a boundary particle half a spacing
+// behind its wall line, on the material's lattice continued (the wall particles sit on the
+// line, half a spacing closer; there the symmetric form held a layer at rest up by about
+// twice its weight); a material particle where it is.
+inline Vec3 latticePosition(const ParticleSystem& ps, std::size_t b) {
+  return ps.isMaterial(b) ? ps.cloud.positions[b] : Vec3(ps.cloud.positions[b] - 0.5 * ps.dx * wallNormal(ps, b));
+}
+
 // p_b(a) − p_a for material particle a and boundary particle b.
 inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g,
                                     std::size_t a, std::size_t b, double dt) {

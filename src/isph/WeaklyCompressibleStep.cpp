@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isph/WallBoundaryPressure.hpp"
+
 namespace isph {
 
 namespace {
 
-// x_a − x_b and ∇W/x factor of a pair; a boundary particle as if half a spacing behind its
-// wall line, on the material's lattice continued (the wall particles sit on the line, half a
-// spacing closer than the lattice; there, the symmetric sums held a layer up by about twice
-// its weight: see laggedPressureForce).
+// x_a − x_b and the gradient factor of a pair, boundary particles at their lattice positions
+// (WallBoundaryPressure.hpp) as in laggedPressureForce.
 struct PairGeometry {
   Vec3 x = Vec3::Zero();
   double F = 0;
@@ -18,15 +18,8 @@ struct PairGeometry {
 
 PairGeometry pairGeometry(const ParticleSystem& ps, const Kernel& kernel, std::size_t a, std::size_t b,
                           std::size_t k) {
-  const auto& c = ps.cloud;
-  const bool wallA = !ps.isMaterial(a), wallB = !ps.isMaterial(b);
-  if (!wallA && !wallB) return {c.positions[a] - c.positions[b], ps.neighbours.F[k]};
-  const auto normal = [&](std::size_t i) -> const Vec3& {
-    return ps.isWall(i) ? c.normal[i] : c.normal[static_cast<std::size_t>(ps.parentWall[i])];
-  };
-  const Vec3 xa = wallA ? Vec3(c.positions[a] - 0.5 * ps.dx * normal(a)) : c.positions[a];
-  const Vec3 xb = wallB ? Vec3(c.positions[b] - 0.5 * ps.dx * normal(b)) : c.positions[b];
-  const Vec3 x = xa - xb;
+  if (ps.isMaterial(a) && ps.isMaterial(b)) return {ps.cloud.positions[a] - ps.cloud.positions[b], ps.neighbours.F[k]};
+  const Vec3 x = latticePosition(ps, a) - latticePosition(ps, b);
   const double r = x.norm();
   if (r <= 0 || r >= kernel.supportRadius()) return {x, 0.0};
   return {x, kernel.dWdr(r) / r};
