@@ -8,6 +8,17 @@
 
 namespace isph {
 
+namespace {
+
+// Particle a's velocity from the interleaved unknowns of the coupled system.
+Vec3 velocityOf(const std::vector<double>& xv, std::size_t a, int dim) {
+  Vec3 u = Vec3::Zero();
+  for (int d = 0; d < dim; ++d) u[d] = xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)];
+  return u;
+}
+
+}  // namespace
+
 ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimension, int frictionPasses)
     : maxFrictionPasses_(frictionPasses) {
   static const char* names[] = {"Ux", "Uy", "Uz"};
@@ -16,6 +27,11 @@ ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimen
 }
 
 ImplicitViscousStep::~ImplicitViscousStep() = default;
+
+void ImplicitViscousStep::renumbered() {
+  for (auto& s : solvers_) s->rebuildPreconditionerForNextSolve();
+  coupledSolver_->rebuildPreconditionerForNextSolve();
+}
 
 std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& ps, const MaterialTable& materials,
                                                           const std::vector<double>& eta,
@@ -126,19 +142,25 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       }
       // A later pass changes only the drag of the particles on a wall: the AMG hierarchy of
       // the first pass still preconditions it (each pass is logged and timed).
+      // The passes before the last stop at `relTol` of `U { }` (their solution only sets the
+      // next drag rate); the last, or a pass after which the drag has settled, is finished to
+      // the tolerance (OpenFOAM's UFinal).
       if (pass > 0) coupledSolver_->keepPreconditionerForNextSolve();
-      perf.push_back(coupledSolver_->solve(coupled_, xv));
-      for (std::size_t a = 0; a < n; ++a) {
-        for (int d = 0; d < dim; ++d) ustar[a][d] = xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)];
-      }
+      const bool last = pass + 1 == maxFrictionPasses_;
+      perf.push_back(last ? coupledSolver_->solveFinal(coupled_, xv) : coupledSolver_->solve(coupled_, xv));
       // Settled when no drag rate would change by more than 1 %.
       bool settled = true;
       for (std::size_t a = 0; a < n; ++a) {
         if (friction->capacity(a) <= 0) continue;
-        const double sl = friction->tangential(a, ustar[a]).norm();
+        const double sl = friction->tangential(a, velocityOf(xv, a, dim)).norm();
         if (std::abs(sl - slip[a]) > 0.01 * (slip[a] + friction->slipSpeed())) settled = false;
         slip[a] = sl;
       }
+      if (settled && !last && coupledSolver_->stopsAtRelTol()) {
+        coupledSolver_->keepPreconditionerForNextSolve();  // the same system, to the tolerance
+        perf.push_back(coupledSolver_->solveFinal(coupled_, xv));
+      }
+      for (std::size_t a = 0; a < n; ++a) ustar[a] = velocityOf(xv, a, dim);
       if (settled) break;
     }
     return perf;
@@ -149,7 +171,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       system_.rhs[a] = rhs[a][d];
       x[a] = ustar[a][d];
     }
-    perf.push_back(solvers_[static_cast<std::size_t>(d)]->solve(system_, x));
+    perf.push_back(solvers_[static_cast<std::size_t>(d)]->solveFinal(system_, x));
     for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
   }
   return perf;

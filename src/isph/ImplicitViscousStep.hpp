@@ -46,6 +46,8 @@ class ImplicitViscousStep {
                                        std::vector<Vec3>& ustar);
 
   double assemblySeconds() const { return assemblySeconds_; }
+  // The material particles were reordered: no solver keeps a preconditioner across it.
+  void renumbered();
 
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.

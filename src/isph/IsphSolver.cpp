@@ -263,7 +263,9 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
     report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
     timer_.add("viscous assembly", viscous_->assemblySeconds());
     for (const auto& perf : report.viscous) {
-      timer_.add("viscous solve", perf.assemblySeconds + perf.setupSeconds + perf.solveSeconds);
+      timer_.add("viscous assembly", perf.assemblySeconds);
+      timer_.add("viscous setup", perf.setupSeconds);
+      timer_.add("viscous solve", perf.solveSeconds);
       if (!perf.converged) {
         fatalError(fmt::format("the implicit viscous step did not converge for {} at time {}: residual {:.3g} "
                                "after {} iterations.\n    The last written time directory is intact; try more "
@@ -311,7 +313,11 @@ StepReport IsphSolver::step(const Time& time) {
   StepReport report;
   {
     auto t = timer_.scope("neighbour search");
-    if (stepsSinceReorder_++ % reorderInterval == 0) reorderMaterialParticles(ps_, kernel_->supportRadius());
+    if (stepsSinceReorder_++ % reorderInterval == 0) {
+      reorderMaterialParticles(ps_, kernel_->supportRadius());
+      ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
+      if (viscous_) viscous_->renumbered();
+    }
     ps_.neighbours.build(ps_.cloud.positions, *kernel_);
   }
   // The pressure is the only particle field changed before the PPE has converged (positions

@@ -66,6 +66,8 @@ class PressurePoissonEquation {
   const SparseSystem& system() const { return system_; }
   const std::vector<int>& rowOf() const { return rowOf_; }
   double assemblySeconds() const { return assemblySeconds_; }
+  // The particles were reordered: the solver keeps no preconditioner across it.
+  void renumbered() { solver_->rebuildPreconditionerForNextSolve(); }
 
  private:
   // `base`: pⁿ for the increment form (Dirichlet value −pⁿ, walls on the increment), or null.

@@ -8,7 +8,7 @@
 
 namespace isph {
 
-SolverPerformance ControlledLinearSolver::solve(const SparseSystem& A, std::vector<double>& x) {
+SolverPerformance ControlledLinearSolver::solveTo(const SparseSystem& A, std::vector<double>& x, double relTol) {
   checkSparseSystem(A);
   const auto n = static_cast<std::size_t>(A.nRows());
   if (x.empty()) x.assign(n, 0.0);
@@ -27,7 +27,7 @@ SolverPerformance ControlledLinearSolver::solve(const SparseSystem& A, std::vect
   }
 
   perf.initialResidual = normalisedResidual(A, x);
-  const double target = std::max(controls_.tolerance, controls_.relTol * perf.initialResidual);
+  const double target = std::max(controls_.tolerance, relTol * perf.initialResidual);
   perf.finalResidual = perf.initialResidual;
   perf.converged = perf.initialResidual <= target;
 

@@ -13,7 +13,9 @@ class ControlledLinearSolver : public LinearSolver {
  public:
   explicit ControlledLinearSolver(LinearSolverControls controls) : controls_(std::move(controls)) {}
 
-  SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) final;
+  SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) final { return solveTo(A, x, controls_.relTol); }
+  SolverPerformance solveFinal(const SparseSystem& A, std::vector<double>& x) final { return solveTo(A, x, 0.0); }
+  bool stopsAtRelTol() const final { return controls_.relTol > 0; }
   const LinearSolverControls& controls() const { return controls_; }
 
  protected:
@@ -23,6 +25,8 @@ class ControlledLinearSolver : public LinearSolver {
                       SolverPerformance& performance) = 0;
 
  private:
+  SolverPerformance solveTo(const SparseSystem& A, std::vector<double>& x, double relTol);
+
   LinearSolverControls controls_;
 };
 

@@ -45,11 +45,19 @@ class LinearSolver {
   virtual ~LinearSolver();
   // x holds the initial guess (warm start; empty means zero) and receives the solution.
   virtual SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) = 0;
+  // As solve(), but to the tolerance alone (relTol 0): the final pass of a nonlinear
+  // iteration whose earlier passes stop at relTol (OpenFOAM's UFinal).
+  virtual SolverPerformance solveFinal(const SparseSystem& A, std::vector<double>& x) = 0;
+  // Whether solve() may stop short of the tolerance (relTol > 0).
+  virtual bool stopsAtRelTol() const = 0;
   virtual std::string name() const = 0;
   // A hint for the next solve only: its matrix differs little from the last one's (same
   // size and numbering, a few changed entries), so a preconditioner built for the last may
   // be kept. Solvers without a reusable preconditioner ignore it.
   virtual void keepPreconditionerForNextSolve() {}
+  // The unknowns have been renumbered (the particles reordered): a kept preconditioner would
+  // precondition a permuted matrix, so the next solve builds afresh whatever reuseSetup says.
+  virtual void rebuildPreconditionerForNextSolve() {}
 };
 
 // The selection table: solvers register a factory under the name users write after `solver`.

@@ -134,6 +134,23 @@ TEST(LinearSolver, RelTolStopsRelativeToTheInitialResidual) {
   EXPECT_GT(perf.finalResidual, 1e-8) << "stops near the relative target, not far below";
 }
 
+// solveFinal (the last pass of a nonlinear iteration, OpenFOAM's UFinal) ignores relTol and
+// goes on from a relTol solve's result to the tolerance.
+TEST(LinearSolver, SolveFinalGoesToTheToleranceWhateverRelTolSays) {
+  const SparseSystem A = latticePoisson(40, Stencil::FivePoint);
+  const auto solver = solverFrom("solver PCG; preconditioner none; tolerance 1e-9; relTol 1e-2;");
+  EXPECT_TRUE(solver->stopsAtRelTol());
+  EXPECT_FALSE(solverFrom("solver PCG; relTol 0;")->stopsAtRelTol());
+  std::vector<double> x;
+  const auto pass = solver->solve(A, x);
+  ASSERT_TRUE(pass.converged) << pass.str();
+  EXPECT_GT(pass.finalResidual, 1e-6) << "the intermediate pass stops near relTol";
+  const auto final = solver->solveFinal(A, x);
+  ASSERT_TRUE(final.converged) << final.str();
+  EXPECT_LE(final.finalResidual, 1e-9);
+  EXPECT_NEAR(final.initialResidual, pass.finalResidual, 1e-3 * pass.finalResidual) << "warm-started from the pass";
+}
+
 TEST(LinearSolver, ZeroRightHandSideGivesZeroSolution) {
   SparseSystem A = latticePoisson(20, Stencil::FivePoint);
   std::fill(A.rhs.begin(), A.rhs.end(), 0.0);

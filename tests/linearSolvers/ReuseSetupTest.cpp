@@ -2,10 +2,12 @@
 // the PPE changes from step to step) still preconditions PCG to the same tolerance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "LatticePoisson.hpp"
 #include "SolverTestHelpers.hpp"
+#include "linearSolvers/hypre/BoomerAMG.hpp"
 #include "linearSolvers/hypre/HypreKrylovSolver.hpp"
 
 namespace isph::test {
@@ -109,6 +111,73 @@ TEST(ReuseSetup, KeepHintIsIgnoredForANewSize) {
   EXPECT_TRUE(perf.converged) << perf.str();
   EXPECT_FALSE(asHypre(*solver).amg()->lastReused());
   EXPECT_EQ(asHypre(*solver).amg()->hierarchiesBuilt(), 2);
+}
+
+// P A Pᵀ for the permutation that reverses the order of the unknowns in blocks of 7 (as the
+// reordering of the particles renumbers them).
+SparseSystem renumbered(const SparseSystem& A) {
+  const int n = A.nRows();
+  std::vector<long> newOf(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) newOf[static_cast<std::size_t>(i)] = (i % 7) * ((n + 6) / 7) + i / 7;
+  std::vector<long> sorted(newOf);
+  std::sort(sorted.begin(), sorted.end());
+  for (auto& v : newOf) v = std::lower_bound(sorted.begin(), sorted.end(), v) - sorted.begin();  // dense 0..n-1
+  std::vector<int> oldOf(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) oldOf[static_cast<std::size_t>(newOf[static_cast<std::size_t>(i)])] = i;
+  SparseSystem B;
+  B.firstRow = 0;
+  B.symmetricHint = A.symmetricHint;
+  B.rowStart.assign(1, 0);
+  for (int r = 0; r < n; ++r) {
+    const int i = oldOf[static_cast<std::size_t>(r)];
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      B.columns.push_back(newOf[static_cast<std::size_t>(A.columns[k] - A.firstRow)]);
+      B.values.push_back(A.values[k]);
+    }
+    B.rowStart.push_back(static_cast<int>(B.columns.size()));
+    B.rhs.push_back(A.rhs[static_cast<std::size_t>(i)]);
+  }
+  return B;
+}
+
+// rebuildPreconditionerForNextSolve (the particles were reordered): the next solve builds a
+// hierarchy for the new numbering although reuses were left, and converges as a fresh one.
+TEST(ReuseSetup, RebuildHintBuildsAfreshForRenumberedUnknowns) {
+  const SparseSystem A = latticePoisson(60, Stencil::Sph21);
+  const SparseSystem B = renumbered(A);
+  const auto solver = solverFrom("solver PCG; tolerance 1e-8; reuseSetup 10;");
+  const auto fresh = solverFrom("solver PCG; tolerance 1e-8;");
+  const auto& amg = *asHypre(*solver).amg();
+  std::vector<double> x, xFresh;
+  ASSERT_TRUE(solver->solve(A, x).converged);
+  solver->rebuildPreconditionerForNextSolve();
+  x.clear();
+  const auto perf = solver->solve(B, x);
+  const auto perfFresh = fresh->solve(B, xFresh);
+  ASSERT_TRUE(perf.converged) << perf.str();
+  EXPECT_FALSE(amg.lastReused());
+  EXPECT_EQ(amg.hierarchiesBuilt(), 2);
+  EXPECT_LE(perf.iterations, perfFresh.iterations + 1) << perf.str() << " vs " << perfFresh.str();
+  EXPECT_LE(relativeDifference(x, exactSolution(B)), 1e-7);
+  x.clear();
+  ASSERT_TRUE(solver->solve(B, x).converged);  // and reuses again after it
+  EXPECT_TRUE(amg.lastReused());
+}
+
+// With reuseSetup > 1 the smoother defaults to symmetric Gauss-Seidel, which works on the
+// current matrix (the l1 smoothers' row norms are the set-up's; BoomerAMG.hpp).
+TEST(ReuseSetup, SmootherDefaultsToSymmetricGaussSeidelWhenReusing) {
+  const auto parse = [](const std::string& entries) {
+    const Dictionary d = Dictionary::parse("U\n{\n" + entries + "\n}\n", "system/isphSolution");
+    return BoomerAMGControls::read(d.subDict("U"));
+  };
+  EXPECT_EQ(parse("reuseSetup 1;").relaxType, -1);  // hypre's default, l1 Gauss-Seidel
+  EXPECT_EQ(parse("reuseSetup 5;").relaxType, 6);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(parse("reuseSetup 5;\nsmoother l1GaussSeidel;").relaxType, -1);
+  const std::string warned = testing::internal::GetCapturedStderr();
+  EXPECT_NE(warned.find("system/isphSolution"), std::string::npos) << warned;
+  EXPECT_NE(warned.find("symmetricGaussSeidel"), std::string::npos) << warned;
 }
 
 TEST(ReuseSetup, ReuseWorksWithGmresAndBiCGSTAB) {

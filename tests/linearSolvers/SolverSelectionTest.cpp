@@ -81,7 +81,8 @@ TEST(SolverSelection, EveryAmgSettingIsAccepted) {
   const int before = warningCount();
   solverFrom(
       "solver PCG; preconditioner BoomerAMG; strongThreshold 0.5; coarsenType PMIS; interpType ext;"
-      " pMaxElmts 6; aggNumLevels 1; smoother l1Jacobi; reuseSetup 3;");
+      " pMaxElmts 6; aggNumLevels 1; smoother symmetricGaussSeidel; reuseSetup 3;");
+  solverFrom("solver PCG; smoother l1Jacobi;");  // an l1 smoother without reuse (BoomerAMG.hpp)
   EXPECT_EQ(warningCount(), before);
 }
 

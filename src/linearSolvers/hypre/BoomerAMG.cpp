@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/Error.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "linearSolvers/hypre/HypreError.hpp"
 
@@ -52,11 +53,18 @@ BoomerAMGControls BoomerAMGControls::read(const Dictionary& dict) {
   checkRange(dict, "pMaxElmts", c.pMaxElmts >= 0, "0 (no truncation) or more");
   c.aggNumLevels = dict.getOrDefault("aggNumLevels", c.aggNumLevels);
   checkRange(dict, "aggNumLevels", c.aggNumLevels >= 0, "0 or more");
-  c.relaxType = codeOf(dict, "smoother",
-                       {{"l1GaussSeidel", -1}, {"symmetricGaussSeidel", 6}, {"l1Jacobi", 18}},
-                       "l1GaussSeidel");
   c.reuseSetup = dict.getOrDefault("reuseSetup", c.reuseSetup);
   checkRange(dict, "reuseSetup", c.reuseSetup >= 1, "1 (rebuild every solve) or more");
+  c.relaxType = codeOf(dict, "smoother",
+                       {{"l1GaussSeidel", -1}, {"symmetricGaussSeidel", 6}, {"l1Jacobi", 18}},
+                       c.reuseSetup > 1 ? "symmetricGaussSeidel" : "l1GaussSeidel");
+  if (c.reuseSetup > 1 && c.relaxType != 6) {
+    warning(fmt::format("reuseSetup {} with an l1 smoother: its row norms are those of the matrix the "
+                        "hierarchy was built for, and PCG can break down where the matrix changes much "
+                        "between solves (smoother symmetricGaussSeidel is safe)",
+                        c.reuseSetup),
+            dict.findEntry("smoother")->location());
+  }
   return c;
 }
 
@@ -84,7 +92,8 @@ void BoomerAMG::destroy() {
 HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
   const bool keep = std::exchange(keepNext_, false);
-  if (sameMatrixShape && (keep || solvesWithHierarchy_ < controls_.reuseSetup)) {
+  const bool renumbered = std::exchange(rebuildNext_, false);
+  if (sameMatrixShape && !renumbered && (keep || solvesWithHierarchy_ < controls_.reuseSetup)) {
     ++solvesWithHierarchy_;
     lastReused_ = true;
     return keepHierarchy;

@@ -9,14 +9,21 @@
 //   pMaxElmts       4;               // interpolation truncation
 //   aggNumLevels    0;               // 1 above ~1e5 unknowns
 //   smoother        l1GaussSeidel;   // l1GaussSeidel (13 down, 14 up: symmetric V-cycle)
-//                                    //   | symmetricGaussSeidel (6) | l1Jacobi (18, GPU)
+//                                    //   | symmetricGaussSeidel (6) | l1Jacobi (18, GPU);
+//                                    //   default symmetricGaussSeidel when reuseSetup > 1
 //   reuseSetup      1;               // keep a hierarchy for N solves (N - 1 reuses)
 //
 // Reuse: the hierarchy built for one matrix preconditions the next reuseSetup - 1 solves
-// (the finest-level smoother always uses the current matrix; the coarse levels are the old
-// ones, still an SPD preconditioner). A matrix of another size forces a rebuild.
-// keepForNextSolve() asks the same for the next solve alone, whatever reuseSetup says (the
-// caller knows its next matrix is a small change of the last: a fixed-point pass).
+// (the finest-level smoother works on the current matrix; the coarse levels are the old
+// ones). A matrix of another size, or renumbered unknowns (rebuildForNextSolve()), forces a
+// rebuild. keepForNextSolve() asks the same for the next solve alone, whatever reuseSetup
+// says (the caller knows its next matrix is a small change of the last: a fixed-point pass).
+// The l1 smoothers divide by the row norms of the matrix they were set up for: where the
+// matrix changes much between solves (the velocity system of a yielding soil, whose η falls
+// by decades where it starts to flow), a stale norm over-relaxes and PCG breaks down
+// (measured: the column collapse at 2 mm, at the second step). Symmetric Gauss-Seidel uses
+// the current matrix only, so with reuseSetup > 1 it is the default, and l1GaussSeidel
+// given explicitly draws a warning.
 #include <HYPRE_parcsr_ls.h>
 
 #include <string>
@@ -50,6 +57,7 @@ class BoomerAMG {
   // HYPRE_BoomerAMGSetup on a fresh hierarchy or a no-op that keeps the current one.
   HYPRE_PtrToParSolverFcn prepare(long firstRow, long nRows);
   void keepForNextSolve() { keepNext_ = true; }
+  void rebuildForNextSolve() { rebuildNext_ = true; }  // the unknowns were renumbered
 
   HYPRE_Solver handle() const { return amg_; }
   static HYPRE_PtrToParSolverFcn solveFunction() { return HYPRE_BoomerAMGSolve; }
@@ -68,6 +76,7 @@ class BoomerAMG {
   int built_ = 0;
   bool lastReused_ = false;
   bool keepNext_ = false;
+  bool rebuildNext_ = false;
 };
 
 }  // namespace isph

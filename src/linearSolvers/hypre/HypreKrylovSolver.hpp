@@ -23,6 +23,9 @@ class HypreKrylovSolver : public ControlledLinearSolver {
   void keepPreconditionerForNextSolve() override {
     if (amg_) amg_->keepForNextSolve();
   }
+  void rebuildPreconditionerForNextSolve() override {
+    if (amg_) amg_->rebuildForNextSolve();
+  }
   // The BoomerAMG preconditioner (nullptr unless chosen): hierarchies built, reuse.
   const BoomerAMG* amg() const { return amg_.get(); }
 
