@@ -28,6 +28,18 @@ ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimen
 
 ImplicitViscousStep::~ImplicitViscousStep() = default;
 
+int ImplicitViscousStep::solvesDone() const {
+  int n = coupledSolver_->solvesDone();
+  for (const auto& s : solvers_) n += s->solvesDone();
+  return n;
+}
+
+int ImplicitViscousStep::preconditionersBuilt() const {
+  int n = coupledSolver_->preconditionersBuilt();
+  for (const auto& s : solvers_) n += s->preconditionersBuilt();
+  return n;
+}
+
 void ImplicitViscousStep::renumbered() {
   for (auto& s : solvers_) s->rebuildPreconditionerForNextSolve();
   coupledSolver_->rebuildPreconditionerForNextSolve();
@@ -146,10 +158,9 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       // next drag rate); the last, or a pass after which the drag has settled, is finished to
       // the tolerance (OpenFOAM's UFinal). The tutorials keep relTol 0: with 0.01 the passes
       // cost less (column collapse, 2 mm: 136 s with relTol 0.01 and reuseSetup 20, 220 s with
-      // neither), but
-      // a block held by bed friction (35° on 30°) crept 0.64 mm in 1 s against 0.25 mm, above
-      // the dx/10 that SlidingBlock.StaysPutWhenTheBedFrictionExceedsTheSlope allows: the stuck
-      // state needs each pass's slip to be accurate.
+      // neither), but a block held by bed friction (35° on 30°) crept 0.64 mm in 1 s against
+      // 0.25 mm, above the dx/10 that SlidingBlock.StaysPutWhenTheBedFrictionExceedsTheSlope
+      // allows: the stuck state needs each pass's slip to be accurate.
       if (pass > 0) coupledSolver_->keepPreconditionerForNextSolve();
       const bool last = pass + 1 == maxFrictionPasses_;
       perf.push_back(last ? coupledSolver_->solveFinal(coupled_, xv) : coupledSolver_->solve(coupled_, xv));

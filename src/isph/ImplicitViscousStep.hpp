@@ -48,6 +48,9 @@ class ImplicitViscousStep {
   double assemblySeconds() const { return assemblySeconds_; }
   // The material particles were reordered: no solver keeps a preconditioner across it.
   void renumbered();
+  // Over the velocity solvers (the components' and the coupled one): solves and hierarchies.
+  int solvesDone() const;
+  int preconditionersBuilt() const;
 
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.

@@ -210,6 +210,19 @@ void IsphSolver::initialiseWallPressure() {
   updateWallPressure(ps_, atRest, g_, 1.0);
 }
 
+std::string IsphSolver::preconditionerSummary() const {
+  std::string s;
+  if (ppe_) {
+    s += fmt::format("AMG hierarchies built for p: {} of {} solves", ppe_->solver().preconditionersBuilt(),
+                     ppe_->solver().solvesDone());
+  }
+  if (viscous_) {
+    s += fmt::format("{}AMG hierarchies built for U: {} of {} solves", s.empty() ? "" : "\n",
+                     viscous_->preconditionersBuilt(), viscous_->solvesDone());
+  }
+  return s;
+}
+
 const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
   if (!materials_->anyDeviatoricStress()) return nullptr;
   if (tauStep_ != stepsTaken_) {

@@ -77,6 +77,8 @@ class IsphSolver {
   const std::vector<SymmTensor>* deviatoricStress();
   // Material particles found behind a wall surface since the start of the run.
   std::size_t wallCrossings() const { return totalWallCrossings_; }
+  // "AMG hierarchies built for p: N of M solves" (and for U), for the end of the log.
+  std::string preconditionerSummary() const;
   const Vec3& gravity() const { return g_; }
 
  private:

@@ -79,19 +79,17 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     if (!wall && theta > ps.latticeSum) flags[a] = 0;
   }
 
+  std::vector<int> unknownRow;  // the unknowns numbered apart, as pinClosedRegions reads them
   for (int pass = 0; pass < 2; ++pass) {
-    rowOf_.assign(ps.size(), -1);
-    particleOf_.clear();
+    unknownRow.assign(ps.size(), -1);
+    int count = 0;
     for (std::size_t a = 0; a < nMat; ++a) {
-      if (!flags[a]) {
-        rowOf_[a] = static_cast<int>(particleOf_.size());
-        particleOf_.push_back(static_cast<int>(a));
-      }
+      if (!flags[a]) unknownRow[a] = count++;
     }
     if (pass == 1) break;
     std::vector<char> touchesDirichlet(nMat, 0);
     for (std::size_t a = 0; a < nMat; ++a) {
-      if (rowOf_[a] < 0) continue;
+      if (unknownRow[a] < 0) continue;
       for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
         const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
         if (b < nMat && flags[b]) {
@@ -100,19 +98,31 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
         }
       }
     }
-    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, rowOf_);
+    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, unknownRow);
     if (pinned == 0) break;
     info("    PPE: {} closed region(s) without a free surface: pressure pinned to 0 at one particle each", pinned);
   }
+  // One row per material particle, in the particles' order, whether or not it is an unknown:
+  // the Dirichlet ones are identity rows with their known value (decoupled: the unknowns next
+  // to them take that value to their right-hand side). So the matrix keeps its size and
+  // numbering from step to step as the free surface changes, and an AMG hierarchy can be
+  // reused (`p { reuseSetup N; }`); until 2026-12-01 the Dirichlet particles were left out,
+  // the size changed every step and every solve built its hierarchy afresh.
+  dirichlet_.assign(flags.begin(), flags.end());
+  rowOf_.assign(ps.size(), -1);
+  for (std::size_t a = 0; a < nMat; ++a) rowOf_[a] = static_cast<int>(a);
 
-  const long nRows = static_cast<long>(particleOf_.size());
+  const long nRows = static_cast<long>(nMat);
   system_.firstRow = 0;
   system_.rowStart.assign(static_cast<std::size_t>(nRows) + 1, 0);
   for (long r = 0; r < nRows; ++r) {
-    const auto a = static_cast<std::size_t>(particleOf_[static_cast<std::size_t>(r)]);
+    const auto a = static_cast<std::size_t>(r);
     int count = 1;
-    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
-      count += rowOf_[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] >= 0;
+    if (!flags[a]) {
+      for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+        const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+        count += b < nMat && !flags[b];
+      }
     }
     system_.rowStart[static_cast<std::size_t>(r) + 1] = system_.rowStart[static_cast<std::size_t>(r)] + count;
   }
@@ -130,7 +140,8 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
 
 #pragma omp parallel for schedule(static)
   for (long r = 0; r < nRows; ++r) {
-    const auto a = static_cast<std::size_t>(particleOf_[static_cast<std::size_t>(r)]);
+    const auto a = static_cast<std::size_t>(r);
+    if (flags[a]) continue;  // a Dirichlet row: below
     const Vec3& xa = c.positions[a];
     const Vec3 dxa = dt * ustar[a];
     const double ma = ps.rho[a] * ps.volume[a];
@@ -181,9 +192,8 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
       if (ps.isMaterial(b)) thetaLattice += ps.volume[b] * nl.W[kk];
       if (ps.isMaterial(b)) {
         diagonal -= C;
-        const int rb = rowOf_[b];
-        if (rb >= 0) {
-          system_.columns[pos] = rb;
+        if (!flags[b]) {
+          system_.columns[pos] = static_cast<long>(b);
           system_.values[pos] = C;
           ++pos;
         } else if (base) {
@@ -222,6 +232,23 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     // A = −(Eq. 10 × m_a): A p = −m_a S_a − Σ_wall C_ab δ_ab
     system_.rhs[static_cast<std::size_t>(r)] = -ma * source - rhsWall;
   }
+  // The Dirichlet rows, scaled like the unknowns' (their mean diagonal) so that neither
+  // dominates the residual: s p_a = s p_D, with p_D = 0, or −pⁿ_a for the increment.
+  double diagonalSum = 0;
+  long unknowns = 0;
+  for (std::size_t a = 0; a < nMat; ++a) {
+    if (flags[a]) continue;
+    diagonalSum += system_.values[static_cast<std::size_t>(system_.rowStart[a])];
+    ++unknowns;
+  }
+  const double scale = unknowns > 0 && diagonalSum > 0 ? diagonalSum / static_cast<double>(unknowns) : 1.0;
+  for (std::size_t a = 0; a < nMat; ++a) {
+    if (!flags[a]) continue;
+    const auto at = static_cast<std::size_t>(system_.rowStart[a]);
+    system_.columns[at] = static_cast<long>(a);
+    system_.values[at] = scale;
+    system_.rhs[a] = base ? -scale * (*base)[a] : 0.0;
+  }
 }
 
 SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kernel& kernel,
@@ -232,11 +259,13 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   auto& p = ps.cloud.p;
-  std::vector<double> x(particleOf_.size());
-  for (std::size_t r = 0; r < x.size(); ++r) x[r] = p[static_cast<std::size_t>(particleOf_[r])];  // warm start
+  std::vector<double> x(p.begin(), p.begin() + static_cast<long>(ps.nMaterial));  // warm start
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    if (dirichlet_[a]) x[a] = 0.0;
+  }
   SolverPerformance perf = solver_->solve(system_, x);
   for (std::size_t a = 0; a < ps.nMaterial; ++a) {
-    p[a] = rowOf_[a] >= 0 ? x[static_cast<std::size_t>(rowOf_[a])] : 0.0;
+    p[a] = dirichlet_[a] ? 0.0 : x[a];
     // Neither soil nor a breaking water front carries tension; SPH suction at a stretching
     // front is also what launches the tensile instability.
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
@@ -256,11 +285,14 @@ SolverPerformance PressurePoissonEquation::solveIncrement(ParticleSystem& ps, co
   assemble(ps, kernel, L, ustar, freeSurface, g, dt, &base);
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::vector<double> x(particleOf_.size(), 0.0);  // warm start: no change
+  std::vector<double> x(ps.nMaterial, 0.0);  // warm start: no change (the Dirichlet rows: their value)
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    if (dirichlet_[a]) x[a] = -base[a];
+  }
   SolverPerformance perf = solver_->solve(system_, x);
   increment.assign(ps.nMaterial, 0.0);
   for (std::size_t a = 0; a < ps.nMaterial; ++a) {
-    p[a] = rowOf_[a] >= 0 ? base[a] + x[static_cast<std::size_t>(rowOf_[a])] : 0.0;
+    p[a] = dirichlet_[a] ? 0.0 : base[a] + x[a];
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
     increment[a] = p[a] - base[a];
   }

@@ -23,7 +23,8 @@
 // and its rods clumped; with it the kernel sum stays within 2 % of θ0 on average. A cut
 // support that is also compressed is not seen (θ_lat < θ0 there).
 // Unknowns are the material particles that are not on the free surface; free-surface
-// particles hold p = 0 (Dirichlet, eliminated), except, for the materials in keepCompressed
+// particles hold p = 0 (Dirichlet: an identity row each, eliminated from their neighbours'
+// rows, so that the matrix has one row per material particle at every step), except, for the materials in keepCompressed
 // (granular ones by default: `freeSurface { compressed granular; }`), flagged particles away
 // from walls whose kernel sum exceeds θ0: a compressed particle is no opening to the outside
 // but a clump at the surface, which p = 0 could not push apart (numerics.md §2: p = 0 inside a
@@ -64,8 +65,10 @@ class PressurePoissonEquation {
 
   // The last assembled system (for tests and diagnostics).
   const SparseSystem& system() const { return system_; }
-  const std::vector<int>& rowOf() const { return rowOf_; }
+  const std::vector<int>& rowOf() const { return rowOf_; }  // a material particle's row (its index), −1 else
+  const std::vector<char>& dirichlet() const { return dirichlet_; }  // per material particle: p held
   double assemblySeconds() const { return assemblySeconds_; }
+  const LinearSolver& solver() const { return *solver_; }
   // The particles were reordered: the solver keeps no preconditioner across it.
   void renumbered() { solver_->rebuildPreconditionerForNextSolve(); }
 
@@ -80,7 +83,7 @@ class PressurePoissonEquation {
   std::vector<char> keepCompressed_;
   SparseSystem system_;
   std::vector<int> rowOf_;
-  std::vector<int> particleOf_;
+  std::vector<char> dirichlet_;
   double assemblySeconds_ = 0;
 };
 

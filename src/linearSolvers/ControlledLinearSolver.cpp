@@ -17,6 +17,7 @@ SolverPerformance ControlledLinearSolver::solveTo(const SparseSystem& A, std::ve
                            name(), controls_.field, n, x.size()));
   }
 
+  ++solves_;
   SolverPerformance perf;
   perf.solverName = name();
   perf.field = controls_.field;

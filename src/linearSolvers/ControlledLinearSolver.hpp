@@ -16,6 +16,7 @@ class ControlledLinearSolver : public LinearSolver {
   SolverPerformance solve(const SparseSystem& A, std::vector<double>& x) final { return solveTo(A, x, controls_.relTol); }
   SolverPerformance solveFinal(const SparseSystem& A, std::vector<double>& x) final { return solveTo(A, x, 0.0); }
   bool stopsAtRelTol() const final { return controls_.relTol > 0; }
+  int solvesDone() const final { return solves_; }
   const LinearSolverControls& controls() const { return controls_; }
 
  protected:
@@ -28,6 +29,7 @@ class ControlledLinearSolver : public LinearSolver {
   SolverPerformance solveTo(const SparseSystem& A, std::vector<double>& x, double relTol);
 
   LinearSolverControls controls_;
+  int solves_ = 0;
 };
 
 }  // namespace isph

@@ -50,6 +50,10 @@ class LinearSolver {
   virtual SolverPerformance solveFinal(const SparseSystem& A, std::vector<double>& x) = 0;
   // Whether solve() may stop short of the tolerance (relTol > 0).
   virtual bool stopsAtRelTol() const = 0;
+  // Solves so far, and AMG hierarchies built for them (0 for solvers that build none): the
+  // log's record of what reuseSetup saved.
+  virtual int solvesDone() const = 0;
+  virtual int preconditionersBuilt() const { return 0; }
   virtual std::string name() const = 0;
   // A hint for the next solve only: its matrix differs little from the last one's (same
   // size and numbering, a few changed entries), so a preconditioner built for the last may

@@ -71,6 +71,7 @@ void run(const isph::ArgList& args) {
   progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
   isph::info("Mean neighbours per particle (last step): {:.1f}", solver.particles().neighbours.meanNeighbours());
+  if (const std::string amg = solver.preconditionerSummary(); !amg.empty()) isph::info("{}", amg);
   isph::info("Peak memory (resident): {:.1f} MB", isph::peakResidentMegabytes());
   // (ExecutionTime is CPU time, as in OpenFOAM: the sum over threads; benchmarks want the wall.)
   isph::info("Time loop: wall {:.3f} s, CPU {:.3f} s",

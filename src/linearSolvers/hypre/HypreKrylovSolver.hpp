@@ -26,6 +26,7 @@ class HypreKrylovSolver : public ControlledLinearSolver {
   void rebuildPreconditionerForNextSolve() override {
     if (amg_) amg_->rebuildForNextSolve();
   }
+  int preconditionersBuilt() const override { return amg_ ? amg_->hierarchiesBuilt() : 0; }
   // The BoomerAMG preconditioner (nullptr unless chosen): hierarchies built, reuse.
   const BoomerAMG* amg() const { return amg_.get(); }
 
