@@ -56,12 +56,12 @@ BoomerAMGControls BoomerAMGControls::read(const Dictionary& dict) {
   c.reuseSetup = dict.getOrDefault("reuseSetup", c.reuseSetup);
   checkRange(dict, "reuseSetup", c.reuseSetup >= 1, "1 (rebuild every solve) or more");
   c.relaxType = codeOf(dict, "smoother",
-                       {{"l1GaussSeidel", -1}, {"symmetricGaussSeidel", 6}, {"l1Jacobi", 18}},
-                       c.reuseSetup > 1 ? "symmetricGaussSeidel" : "l1GaussSeidel");
-  if (c.reuseSetup > 1 && c.relaxType != 6) {
+                       {{"l1GaussSeidel", -1}, {"GaussSeidel", 3}, {"symmetricGaussSeidel", 6}, {"l1Jacobi", 18}},
+                       c.reuseSetup > 1 ? "GaussSeidel" : "l1GaussSeidel");
+  if (c.reuseSetup > 1 && (c.relaxType == -1 || c.relaxType == 18)) {
     warning(fmt::format("reuseSetup {} with an l1 smoother: its row norms are those of the matrix the "
                         "hierarchy was built for, and PCG can break down where the matrix changes much "
-                        "between solves (smoother symmetricGaussSeidel is safe)",
+                        "between solves (smoother GaussSeidel or symmetricGaussSeidel is safe)",
                         c.reuseSetup),
             dict.findEntry("smoother")->location());
   }
@@ -80,7 +80,12 @@ void BoomerAMG::create() {
   HYPRE_BoomerAMGSetPMaxElmts(amg_, controls_.pMaxElmts);
   HYPRE_BoomerAMGSetStrongThreshold(amg_, controls_.strongThreshold);
   HYPRE_BoomerAMGSetAggNumLevels(amg_, controls_.aggNumLevels);
-  if (controls_.relaxType >= 0) HYPRE_BoomerAMGSetRelaxType(amg_, controls_.relaxType);
+  if (controls_.relaxType == 3) {  // forward sweeps down, backward up: a symmetric V-cycle
+    HYPRE_BoomerAMGSetCycleRelaxType(amg_, 3, 1);
+    HYPRE_BoomerAMGSetCycleRelaxType(amg_, 4, 2);
+  } else if (controls_.relaxType >= 0) {
+    HYPRE_BoomerAMGSetRelaxType(amg_, controls_.relaxType);
+  }
   hypreCheck(HYPRE_GetError(), "configuring BoomerAMG");
 }
 
@@ -93,7 +98,8 @@ HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
   const bool keep = std::exchange(keepNext_, false);
   const bool renumbered = std::exchange(rebuildNext_, false);
-  if (sameMatrixShape && !renumbered && (keep || solvesWithHierarchy_ < controls_.reuseSetup)) {
+  const bool degraded = std::exchange(degraded_, false);
+  if (sameMatrixShape && !renumbered && (keep || (!degraded && solvesWithHierarchy_ < controls_.reuseSetup))) {
     ++solvesWithHierarchy_;
     lastReused_ = true;
     return keepHierarchy;
@@ -103,9 +109,18 @@ HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   firstRow_ = firstRow;
   nRows_ = nRows;
   solvesWithHierarchy_ = 1;
+  firstIterations_ = -1;
   ++built_;
   lastReused_ = false;
   return HYPRE_BoomerAMGSetup;
+}
+
+void BoomerAMG::solved(int iterations) {
+  if (firstIterations_ < 0) {
+    firstIterations_ = iterations;
+  } else if (2 * iterations > 3 * firstIterations_ + 4) {
+    degraded_ = true;
+  }
 }
 
 }  // namespace isph

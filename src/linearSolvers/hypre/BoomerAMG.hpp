@@ -9,20 +9,25 @@
 //   pMaxElmts       4;               // interpolation truncation
 //   aggNumLevels    0;               // 1 above ~1e5 unknowns
 //   smoother        l1GaussSeidel;   // l1GaussSeidel (13 down, 14 up: symmetric V-cycle)
-//                                    //   | symmetricGaussSeidel (6) | l1Jacobi (18, GPU);
-//                                    //   default symmetricGaussSeidel when reuseSetup > 1
+//                                    //   | GaussSeidel (3 down, 4 up) | symmetricGaussSeidel
+//                                    //   (6: both sweeps each time, about 1.6 × the cost of
+//                                    //   a V-cycle) | l1Jacobi (18, GPU);
+//                                    //   default GaussSeidel when reuseSetup > 1
 //   reuseSetup      1;               // keep a hierarchy for N solves (N - 1 reuses)
 //
 // Reuse: the hierarchy built for one matrix preconditions the next reuseSetup - 1 solves
 // (the finest-level smoother works on the current matrix; the coarse levels are the old
-// ones). A matrix of another size, or renumbered unknowns (rebuildForNextSolve()), forces a
+// ones), unless a solve with it takes more than 1.5 × + 2 the Krylov iterations of its first
+// (the matrix has drifted: a soil column that starts to yield, whose η falls by decades in a
+// few steps, took 19 iterations with a kept hierarchy against 7 with fresh ones at 160k
+// particles). A matrix of another size, or renumbered unknowns (rebuildForNextSolve()), forces a
 // rebuild. keepForNextSolve() asks the same for the next solve alone, whatever reuseSetup
 // says (the caller knows its next matrix is a small change of the last: a fixed-point pass).
 // The l1 smoothers divide by the row norms of the matrix they were set up for: where the
 // matrix changes much between solves (the velocity system of a yielding soil, whose η falls
 // by decades where it starts to flow), a stale norm over-relaxes and PCG breaks down
-// (measured: the column collapse at 2 mm, at the second step). Symmetric Gauss-Seidel uses
-// the current matrix only, so with reuseSetup > 1 it is the default, and l1GaussSeidel
+// (measured: the column collapse at 2 mm, at the second step). Gauss-Seidel uses the
+// current matrix's diagonal, so with reuseSetup > 1 it is the default, and an l1 smoother
 // given explicitly draws a warning.
 #include <HYPRE_parcsr_ls.h>
 
@@ -38,7 +43,7 @@ struct BoomerAMGControls {
   int interpType = 6;    // ext+i
   int pMaxElmts = 4;
   int aggNumLevels = 0;
-  int relaxType = -1;  // -1: hypre's default (l1-GS forward down, backward up)
+  int relaxType = -1;  // -1: hypre's default (l1-GS forward down, backward up); 3: GS 3 down, 4 up
   int reuseSetup = 1;
 
   // FatalError at the keyword's line for an unknown name or an out-of-range value.
@@ -57,6 +62,10 @@ class BoomerAMG {
   // HYPRE_BoomerAMGSetup on a fresh hierarchy or a no-op that keeps the current one.
   HYPRE_PtrToParSolverFcn prepare(long firstRow, long nRows);
   void keepForNextSolve() { keepNext_ = true; }
+  // The Krylov iterations of the solve just done with the current hierarchy: a kept
+  // hierarchy that has become a poor preconditioner (more than 1.5 × + 2 the iterations of
+  // its first solve) is rebuilt for the next solve although reuses are left.
+  void solved(int iterations);
   void rebuildForNextSolve() { rebuildNext_ = true; }  // the unknowns were renumbered
 
   HYPRE_Solver handle() const { return amg_; }
@@ -73,6 +82,8 @@ class BoomerAMG {
   HYPRE_Solver amg_ = nullptr;
   long firstRow_ = -1, nRows_ = -1;  // the matrix the hierarchy was built for
   int solvesWithHierarchy_ = 0;
+  int firstIterations_ = -1;  // of the hierarchy's first solve
+  bool degraded_ = false;
   int built_ = 0;
   bool lastReused_ = false;
   bool keepNext_ = false;

@@ -214,6 +214,7 @@ int HypreKrylovSolver::iterate(const SparseSystem& A, std::vector<double>& x, do
   HYPRE_ClearAllErrors();
   HYPRE_Int iterations = 0;
   f.iterations(s, &iterations);
+  if (amg_) amg_->solved(static_cast<int>(iterations));
   solution.copyTo(x);
   performance.solveSeconds += secondsSince(start);
   return iterations;
