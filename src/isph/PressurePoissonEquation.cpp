@@ -16,17 +16,17 @@ PressurePoissonEquation::PressurePoissonEquation(const IsphSchemes& schemes, std
 
 namespace {
 
-// Marks one particle of every connected group of unknowns that touches no Dirichlet
-// particle (a closed, completely filled container): without it the system is singular.
-// Returns the number of pinned particles.
+// Marks (in flags) one particle of every connected group of unknowns (dirichlet 0) that
+// touches no Dirichlet particle (a closed, completely filled container): without it the
+// system is singular. Returns the number of pinned particles.
 int pinClosedRegions(const ParticleSystem& ps, const std::vector<char>& touchesDirichlet, std::vector<char>& flags,
-                     const std::vector<int>& rowOf) {
+                     const std::vector<char>& dirichlet) {
   const std::size_t n = ps.nMaterial;
   std::vector<char> seen(n, 0);
   std::vector<std::size_t> stack;
   int pinned = 0;
   for (std::size_t s = 0; s < n; ++s) {
-    if (seen[s] || rowOf[s] < 0) continue;
+    if (seen[s] || dirichlet[s]) continue;
     bool anchored = false;
     stack.assign(1, s);
     seen[s] = 1;
@@ -36,7 +36,7 @@ int pinClosedRegions(const ParticleSystem& ps, const std::vector<char>& touchesD
       anchored = anchored || touchesDirichlet[a];
       for (long k = ps.neighbours.start[a]; k < ps.neighbours.start[a + 1]; ++k) {
         const auto b = static_cast<std::size_t>(ps.neighbours.index[static_cast<std::size_t>(k)]);
-        if (b < n && !seen[b] && rowOf[b] >= 0) {
+        if (b < n && !seen[b] && !dirichlet[b]) {
           seen[b] = 1;
           stack.push_back(b);
         }
@@ -79,17 +79,10 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     if (!wall && theta > ps.latticeSum) flags[a] = 0;
   }
 
-  std::vector<int> unknownRow;  // the unknowns numbered apart, as pinClosedRegions reads them
-  for (int pass = 0; pass < 2; ++pass) {
-    unknownRow.assign(ps.size(), -1);
-    int count = 0;
-    for (std::size_t a = 0; a < nMat; ++a) {
-      if (!flags[a]) unknownRow[a] = count++;
-    }
-    if (pass == 1) break;
+  {
     std::vector<char> touchesDirichlet(nMat, 0);
     for (std::size_t a = 0; a < nMat; ++a) {
-      if (unknownRow[a] < 0) continue;
+      if (flags[a]) continue;
       for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
         const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
         if (b < nMat && flags[b]) {
@@ -98,9 +91,11 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
         }
       }
     }
-    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, unknownRow);
-    if (pinned == 0) break;
-    info("    PPE: {} closed region(s) without a free surface: pressure pinned to 0 at one particle each", pinned);
+    const std::vector<char> dirichlet(flags);  // before pinning: the groups are of these unknowns
+    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, dirichlet);
+    if (pinned > 0) {
+      info("    PPE: {} closed region(s) without a free surface: pressure pinned to 0 at one particle each", pinned);
+    }
   }
   // One row per material particle, in the particles' order, whether or not it is an unknown:
   // the Dirichlet ones are identity rows with their known value (decoupled: the unknowns next
@@ -109,8 +104,6 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   // reused (`p { reuseSetup N; }`); until 2026-12-01 the Dirichlet particles were left out,
   // the size changed every step and every solve built its hierarchy afresh.
   dirichlet_.assign(flags.begin(), flags.end());
-  rowOf_.assign(ps.size(), -1);
-  for (std::size_t a = 0; a < nMat; ++a) rowOf_[a] = static_cast<int>(a);
 
   const long nRows = static_cast<long>(nMat);
   system_.firstRow = 0;

@@ -65,8 +65,6 @@ class PressurePoissonEquation {
 
   // The last assembled system (for tests and diagnostics).
   const SparseSystem& system() const { return system_; }
-  const std::vector<int>& rowOf() const { return rowOf_; }  // a material particle's row (its index), −1 else
-  const std::vector<char>& dirichlet() const { return dirichlet_; }  // per material particle: p held
   double assemblySeconds() const { return assemblySeconds_; }
   const LinearSolver& solver() const { return *solver_; }
   // The particles were reordered: the solver keeps no preconditioner across it.
@@ -82,8 +80,7 @@ class PressurePoissonEquation {
   std::unique_ptr<LinearSolver> solver_;
   std::vector<char> keepCompressed_;
   SparseSystem system_;
-  std::vector<int> rowOf_;
-  std::vector<char> dirichlet_;
+  std::vector<char> dirichlet_;  // per material particle (its row): p held, an identity row
   double assemblySeconds_ = 0;
 };
 
