@@ -98,8 +98,8 @@ HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
   const bool keep = std::exchange(keepNext_, false);
   const bool renumbered = std::exchange(rebuildNext_, false);
-  // (A drifted hierarchy still serves a kept pass; the next solve that may rebuild does.)
-  if (sameMatrixShape && !renumbered && (keep || (!degraded_ && solvesWithHierarchy_ < controls_.reuseSetup))) {
+  const bool degraded = std::exchange(degraded_, false);
+  if (sameMatrixShape && !renumbered && (keep || (!degraded && solvesWithHierarchy_ < controls_.reuseSetup))) {
     ++solvesWithHierarchy_;
     lastReused_ = true;
     return keepHierarchy;
@@ -110,7 +110,6 @@ HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
   nRows_ = nRows;
   solvesWithHierarchy_ = 1;
   firstIterations_ = -1;
-  degraded_ = false;
   ++built_;
   lastReused_ = false;
   return HYPRE_BoomerAMGSetup;
