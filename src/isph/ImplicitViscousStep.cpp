@@ -114,71 +114,51 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   }
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  // Coulomb friction as a regularised drag on the tangential velocity (numerics.md §3, the
-  // wall viscosity of the implicit form): particle a next to a friction wall feels
-  //   f_a = −F_a u_t*/(|u_t| + u_slip),
-  // the Coulomb force F_a against its own sliding direction once |u_t| ≫ u_slip, and a stiff
-  // drag that holds it below. The direction comes from the solve itself (it is implicit in
-  // u_t*), so noise in the bed row cannot make neighbours disagree on it; |u_t| starts at
-  // time n and is updated by Picard passes until it settles. A wall that cannot hold the
-  // material lets it go: from rest, |u_t| grows by the ratio of the driving force to F_a per
-  // pass until the Coulomb regime is reached. The passes stop at `wallFriction { passes }`
-  // of isphSchemes (default 4): with fewer the drag lags the slip more (the sliding block at
-  // 5 mm: acceleration −1.0 % of Coulomb's with 4 passes, −1.9 % with 2) for a step up to
-  // twice as cheap where the material rests on walls.
+  // Coulomb friction on the tangential velocity (numerics.md §3, the wall viscosity of the
+  // implicit form), by the active-set iteration of WallFrictionActiveSet: each pass solves
+  // with every bed particle's law linearised in its stick/slip state of the last pass (from
+  // time n at the first), and the passes stop when no state changes, or at
+  // `wallFriction { passes }` of isphSchemes (default 10; 2-4 are typical).
   const std::size_t n = static_cast<std::size_t>(nMat);
-  std::vector<double> slip(n, 0.0);  // |u_t| that sets the drag rate
-  if (drag) {
-    for (std::size_t a = 0; a < n; ++a) {
-      if (friction->capacity(a) > 0) slip[a] = friction->tangential(a, c.U[a]).norm();
-    }
-  }
   std::vector<SolverPerformance> perf;
   std::vector<double> x(n);
   ustar.assign(ps.size(), Vec3::Zero());
   for (std::size_t a = 0; a < n; ++a) ustar[a] = c.U[a] + dt * force(a);  // warm start: the explicit predictor
   if (drag) {
-    // The drag acts on the tangential velocity only: K_a (I − n_a n_aᵀ) couples the components
-    // of a particle, so the components are solved together (one system of dim × N unknowns,
+    // The drag acts on the tangential velocity only: it couples the components of a
+    // particle, so the components are solved together (one system of dim × N unknowns,
     // interleaved), exactly: an isotropic drag with the normal part moved to the right-hand
-    // side would push the material off the wall, or hold it there, by K_a (ũ_n − u*_n).
+    // side would push the material off the wall, or hold it there.
+    activeSet_.start(*friction, c.U, c.origId, n);
+    lastPasses_ = 0;
     for (int pass = 0; pass < maxFrictionPasses_; ++pass) {
-      std::vector<double> rate(n, 0.0);
-      for (std::size_t a = 0; a < n; ++a) {
-        if (friction->capacity(a) > 0) rate[a] = friction->capacity(a) / (slip[a] + friction->slipSpeed());
-      }
-      assembleCoupled(ps.dimension, rate, *friction, rhs);
+      assembleCoupled(ps.dimension, rhs);
       std::vector<double> xv(n * static_cast<std::size_t>(dim));
       for (std::size_t a = 0; a < n; ++a) {
         for (int d = 0; d < dim; ++d) xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] = ustar[a][d];
       }
-      // A later pass changes only the drag of the particles on a wall: the AMG hierarchy of
-      // the first pass still preconditions it (each pass is logged and timed).
-      // The passes before the last stop at `relTol` of `U { }` (their solution only sets the
-      // next drag rate); the last, or a pass after which the drag has settled, is finished to
-      // the tolerance (OpenFOAM's UFinal). The tutorials keep relTol 0: with 0.01 the passes
-      // cost less (column collapse, 2 mm: 136 s with relTol 0.01 and reuseSetup 20, 220 s with
-      // neither), but a block held by bed friction (35° on 30°) crept 0.64 mm in 1 s against
-      // 0.25 mm, above the dx/10 that SlidingBlock.StaysPutWhenTheBedFrictionExceedsTheSlope
-      // allows: the stuck state needs each pass's slip to be accurate.
+      // A later pass changes only the rows of the particles whose state changed: the AMG
+      // hierarchy of the first pass still preconditions it (each pass is logged and timed).
+      // The passes before the last stop at `relTol` of `U { }`; the last, or a pass after
+      // which no state changes, is finished to the tolerance (OpenFOAM's UFinal). The
+      // tutorials keep relTol 0: a block held by bed friction must not creep on inexact passes.
       if (pass > 0) coupledSolver_->keepPreconditionerForNextSolve();
       const bool last = pass + 1 == maxFrictionPasses_;
       perf.push_back(last ? coupledSolver_->solveFinal(coupled_, xv) : coupledSolver_->solve(coupled_, xv));
-      // Settled when no drag rate would change by more than 1 %.
-      bool settled = true;
-      for (std::size_t a = 0; a < n; ++a) {
-        if (friction->capacity(a) <= 0) continue;
-        const double sl = friction->tangential(a, velocityOf(xv, a, dim)).norm();
-        if (std::abs(sl - slip[a]) > 0.01 * (slip[a] + friction->slipSpeed())) settled = false;
-        slip[a] = sl;
-      }
+      ++lastPasses_;
+      const bool settled = activeSet_.update(xv, dim) == 0;
       if (settled && !last && coupledSolver_->stopsAtRelTol()) {
         coupledSolver_->keepPreconditionerForNextSolve();  // the same system, to the tolerance
         perf.push_back(coupledSolver_->solveFinal(coupled_, xv));
       }
       for (std::size_t a = 0; a < n; ++a) ustar[a] = velocityOf(xv, a, dim);
+      lastSettled_ = settled;
       if (settled) break;
     }
+    activeSet_.remember(c.origId);
+    ++frictionSolves_;
+    frictionSettled_ += lastSettled_;
+    frictionPassesDone_ += lastPasses_;
     return perf;
   }
   perf.clear();
@@ -193,38 +173,49 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   return perf;
 }
 
-void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<double>& rate, const WallFriction& friction,
-                                          const std::vector<Vec3>& rhs) {
-  const std::size_t n = rate.size();
+void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<Vec3>& rhs) {
+  const std::size_t n = rhs.size();
   const auto D = static_cast<std::size_t>(dim);
   coupled_.firstRow = 0;
   coupled_.symmetricHint = true;
+  // Row lengths first (the particle's own block, its material neighbours), then each row
+  // filled in place, in parallel.
   coupled_.rowStart.assign(n * D + 1, 0);
-  coupled_.columns.clear();
-  coupled_.values.clear();
-  coupled_.rhs.assign(n * D, 0.0);
   for (std::size_t a = 0; a < n; ++a) {
+    const bool onWall = activeSet_.state(a) != WallFrictionActiveSet::State::free;
+    const long length = (onWall ? static_cast<long>(D) : 1) + system_.rowStart[a + 1] - system_.rowStart[a] - 1;
+    for (std::size_t d = 0; d < D; ++d) coupled_.rowStart[a * D + d + 1] = coupled_.rowStart[a * D + d] + length;
+  }
+  const auto nnz = static_cast<std::size_t>(coupled_.rowStart.back());
+  coupled_.columns.resize(nnz);
+  coupled_.values.resize(nnz);
+  coupled_.rhs.resize(n * D);
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < static_cast<long>(n); ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
     const auto begin = static_cast<std::size_t>(system_.rowStart[a]);
     const auto end = static_cast<std::size_t>(system_.rowStart[a + 1]);
-    const Vec3& nrm = friction.normal(a);
+    const bool onWall = activeSet_.state(a) != WallFrictionActiveSet::State::free;
+    const Vec3 f = activeSet_.force(a);
     for (std::size_t d = 0; d < D; ++d) {
       const std::size_t row = a * D + d;
-      // The particle's own block: the scalar diagonal plus K_a (I − n nᵀ).
-      coupled_.columns.push_back(static_cast<long>(row));
-      coupled_.values.push_back(system_.values[begin] + rate[a] * (1.0 - nrm[static_cast<long>(d)] * nrm[static_cast<long>(d)]));
-      if (rate[a] > 0) {
+      const int di = static_cast<int>(d);
+      auto pos = static_cast<std::size_t>(coupled_.rowStart[row]);
+      // The particle's own block: the scalar diagonal plus its friction block.
+      coupled_.columns[pos] = static_cast<long>(row);
+      coupled_.values[pos++] = system_.values[begin] + activeSet_.block(a, di, di);
+      if (onWall) {
         for (std::size_t e = 0; e < D; ++e) {
           if (e == d) continue;
-          coupled_.columns.push_back(static_cast<long>(a * D + e));
-          coupled_.values.push_back(-rate[a] * nrm[static_cast<long>(d)] * nrm[static_cast<long>(e)]);
+          coupled_.columns[pos] = static_cast<long>(a * D + e);
+          coupled_.values[pos++] = activeSet_.block(a, di, static_cast<int>(e));
         }
       }
       for (std::size_t k = begin + 1; k < end; ++k) {  // the material neighbours, same component
-        coupled_.columns.push_back(system_.columns[k] * static_cast<long>(D) + static_cast<long>(d));
-        coupled_.values.push_back(system_.values[k]);
+        coupled_.columns[pos] = system_.columns[k] * static_cast<long>(D) + static_cast<long>(d);
+        coupled_.values[pos++] = system_.values[k];
       }
-      coupled_.rhs[row] = rhs[a][static_cast<long>(d)];
-      coupled_.rowStart[row + 1] = static_cast<long>(coupled_.columns.size());
+      coupled_.rhs[row] = rhs[a][static_cast<long>(d)] + f[static_cast<long>(d)];
     }
   }
 }

@@ -11,11 +11,12 @@
 // (u_aⁿ·n) n) on the right: the no-slip term acts on the tangential velocity of time n and
 // leaves the wall-normal motion and the gravity increment to the PPE, as the explicit form
 // does (a fluid at rest stays exactly at rest). For granular
-// material the walls enter instead through the Coulomb drag K_a of WallFriction, which acts
-// on the tangential velocity only, K_a (I − n_a n_aᵀ): it couples the components of a
-// particle, so where a drag acts the components are solved together (one SPD system of
-// dim × N unknowns, interleaved; `U { ... }`) and the wall-normal motion is left to the
-// pressure exactly. The time step is then free of the viscous limit ρh²/η: a zone below yield, where
+// material the walls enter instead through the Coulomb friction of WallFriction, which acts
+// on the tangential velocity only: a sticking particle adds K_a (I − n_a n_aᵀ) to its block,
+// a sliding one the Coulomb force to its right-hand side (WallFrictionActiveSet, whose passes
+// settle the stick/slip states). The block couples the components of a particle, so where
+// friction acts the components are solved together (one SPD system of dim × N unknowns,
+// interleaved; `U { ... }`) and the wall-normal motion is left to the pressure exactly. The time step is then free of the viscous limit ρh²/η: a zone below yield, where
 // η reaches etaMax, moves as a rigid body instead of jittering (numerics.md §4).
 // The cross term ∇·(η ∇uᵀ), non-zero where η varies, is neglected (as in Morris's form).
 // With a lagged body force f (the incremental projection), g becomes g + f throughout: in
@@ -26,6 +27,7 @@
 
 #include "isph/ParticleSystem.hpp"
 #include "isph/WallFriction.hpp"
+#include "isph/WallFrictionActiveSet.hpp"
 #include "linearSolvers/LinearSolver.hpp"
 
 namespace isph {
@@ -33,7 +35,7 @@ namespace isph {
 class ImplicitViscousStep {
  public:
   // One solver per component (their AMG set-ups are kept apart), configured from solverDict.
-  // frictionPasses: at most this many solves per step to settle the bed drag (≥ 1).
+  // frictionPasses: at most this many solves per step to settle the bed friction (≥ 1).
   ImplicitViscousStep(const Dictionary& solverDict, int dimension, int frictionPasses);
   ~ImplicitViscousStep();
 
@@ -51,11 +53,20 @@ class ImplicitViscousStep {
   // Over the velocity solvers (the components' and the coupled one): solves and hierarchies.
   int solvesDone() const;
   int preconditionersBuilt() const;
+  // The bed friction of the last solve: its passes, whether its stick/slip states settled,
+  // and how many particles stuck and slid at the end.
+  int lastFrictionPasses() const { return lastPasses_; }
+  bool lastFrictionSettled() const { return lastSettled_; }
+  const WallFrictionActiveSet& frictionStates() const { return activeSet_; }
+  // Over the run: the solves with bed friction, how many of them settled, and their passes.
+  int frictionSolves() const { return frictionSolves_; }
+  int frictionSolvesSettled() const { return frictionSettled_; }
+  int frictionPassesDone() const { return frictionPassesDone_; }
+  int maxFrictionPasses() const { return maxFrictionPasses_; }
 
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
-  void assembleCoupled(int dim, const std::vector<double>& rate, const WallFriction& friction,
-                       const std::vector<Vec3>& rhs);
+  void assembleCoupled(int dim, const std::vector<Vec3>& rhs);
 
   std::vector<std::unique_ptr<LinearSolver>> solvers_;
   std::unique_ptr<LinearSolver> coupledSolver_;
@@ -63,6 +74,10 @@ class ImplicitViscousStep {
   SparseSystem coupled_;
   double assemblySeconds_ = 0;
   int maxFrictionPasses_ = 4;
+  WallFrictionActiveSet activeSet_;
+  int lastPasses_ = 0;
+  bool lastSettled_ = true;
+  int frictionSolves_ = 0, frictionSettled_ = 0, frictionPassesDone_ = 0;
 };
 
 }  // namespace isph

@@ -184,8 +184,9 @@ std::string IsphSchemes::describe() const {
   out += fmt::format("    deviatoric term (where a material has one): {}\n",
                      viscousTerm == ViscousTerm::implicit
                          ? fmt::format("semi-implicit (Morris operator, one PCG solve per component, or one for all "
-                                       "components where a Coulomb wall drag acts, repeated up to {} times to "
-                                       "settle the drag; no viscous time-step limit)",
+                                       "components where a Coulomb wall drag acts, repeated up to {} times "
+                                       "until the stick/slip state of every particle on a wall settles; no "
+                                       "viscous time-step limit)",
                                        frictionPasses)
                          : std::string("explicit (Morris operator; viscous time-step limit)"));
   if (viscousTerm == ViscousTerm::implicit) {

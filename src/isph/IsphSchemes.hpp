@@ -34,11 +34,11 @@
 //                                    // solve sees the pressure force of the last step and
 //                                    // Eq. 11 corrects with the change (IsphSolver.hpp); by
 //                                    // default in scenes with a granular material
-//   wallFriction     { slipSpeed 1e-5; passes 4; }  // slipSpeed [m/s]: Coulomb walls stick
+//   wallFriction     { slipSpeed 1e-5; passes 10; }  // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
-//                                    // this many velocity solves per step to settle the bed
-//                                    // drag on the slip it causes (fewer: faster, the drag
-//                                    // lags more; see ImplicitViscousStep.hpp)
+//                                    // this many velocity solves per step to settle the
+//                                    // stick/slip state of each particle on a wall (2-3 on
+//                                    // average; see WallFrictionActiveSet.hpp)
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -90,7 +90,7 @@ struct IsphSchemes {
   ViscousTerm viscousTerm = ViscousTerm::implicit;
   MaterialScope incrementalPressure = MaterialScope::none;
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
-  int frictionPasses = 4;
+  int frictionPasses = 10;
 
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.

@@ -219,6 +219,12 @@ std::string IsphSolver::preconditionerSummary() const {
   if (viscous_) {
     s += fmt::format("{}AMG hierarchies built for U: {} of {} solves", s.empty() ? "" : "\n",
                      viscous_->preconditionersBuilt(), viscous_->solvesDone());
+    if (viscous_->frictionSolves() > 0) {
+      s += fmt::format("\nBed friction: stick/slip states settled in {} of {} steps ({:.2f} passes per step, at most {})",
+                       viscous_->frictionSolvesSettled(), viscous_->frictionSolves(),
+                       static_cast<double>(viscous_->frictionPassesDone()) / viscous_->frictionSolves(),
+                       viscous_->maxFrictionPasses());
+    }
   }
   return s;
 }

@@ -21,10 +21,10 @@
 // Two ways to apply it, one per treatment of the viscous term:
 // - explicit: the tangential velocity loses dt F_a/m_a, capped so that the step cannot
 //   reverse it (a particle that would reverse sticks);
-// - implicit (inside the semi-implicit viscous solve): a drag K_a u_t with the rate
-//   K_a = F_a / (|u_t| + u_slip), |u_t| from Picard passes that start at time n. While
-//   sliding it is the Coulomb force; below the slip speed u_slip it makes the wall stick, and
-//   a wall that cannot hold the material lets it go (|u_t| grows geometrically until it slides).
+// - implicit (inside the semi-implicit viscous solve): the Coulomb force F_a against the
+//   slip while |u_t| > u_slip, a stiff drag (F_a/u_slip) u_t that holds the particle below
+//   it, each particle's stick/slip state settled by the active-set passes of
+//   WallFrictionActiveSet.
 #include <vector>
 
 #include "core/Types.hpp"

@@ -16,9 +16,9 @@ IsphSchemes schemesFrom(const std::string& text) {
   return IsphSchemes::read(Dictionary::parse(text, "isphSchemes"), 2);
 }
 
-TEST(IsphSchemes, WallFrictionPassesDefaultToFour) {
-  EXPECT_EQ(schemesFrom("").frictionPasses, 4);
-  EXPECT_NE(schemesFrom("").describe().find("repeated up to 4 times"), std::string::npos);
+TEST(IsphSchemes, WallFrictionPassesDefaultToTen) {
+  EXPECT_EQ(schemesFrom("").frictionPasses, 10);
+  EXPECT_NE(schemesFrom("").describe().find("repeated up to 10 times"), std::string::npos);
 }
 
 TEST(IsphSchemes, WallFrictionPassesAreRead) {

@@ -4,7 +4,9 @@
 // = 1.8128 m/s² (tutorials/validation/slidingBlock/validation/, elementary mechanics), the
 // acceleration fitted over the ten written times within 3 %, with no wall crossing.
 // The same block with δ = 35° (tan δ = 0.70 > tan θ = 0.58) must stay put: no particle
-// moves more than dx/10 over the 1 s (the creep limit).
+// moves more than dx/10 over the 1 s (the creep limit). Launched down that plane at
+// 0.5 m/s it must decelerate as a Coulomb block, a = g (tan δ cos θ − sin θ) = 1.0437 m/s²,
+// stop after v0²/2a = 0.1198 m (within 3 %) at t = v0/a = 0.48 s, and then stay stopped.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +70,33 @@ TEST(SlidingBlock, StaysPutWhenTheBedFrictionExceedsTheSlope) {
   std::printf("centre of mass travel %.3g mm, largest particle displacement %.3g mm (dx/10 = %.3g mm)\n", 1e3 * travel,
               1e3 * maxDisplacement, 100 * dx);
   EXPECT_LT(maxDisplacement, 0.1 * dx) << "the block crept or deformed";
+}
+
+TEST(SlidingBlock, LaunchedDownASteeperFrictionStopsAtTheCoulombDistance) {
+  const double theta = 30 * M_PI / 180, delta = 35 * M_PI / 180, g = 9.81, v0 = 0.5, dx = 0.005;
+  const double decel = g * (std::tan(delta) * std::cos(theta) - std::sin(theta));
+  const double stop = v0 * v0 / (2 * decel);
+  CaseRunner c("slidingBlock", "slidingBlockStops");
+  ASSERT_NO_FATAL_FAILURE(c.replaceText("system/particleMeshDict", "frictionAngle 20;", "frictionAngle 35;"));
+  ASSERT_NO_FATAL_FAILURE(
+      c.replaceText("system/particleMeshDict", "material rock; }", "material rock; initialVelocity (0.5 0 0); }"));
+  ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
+  EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+
+  const double x0 = meanMaterialX(readCloud(c.path() / "0", "particles"));
+  for (const char* t : {"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"}) {
+    const double tt = std::stod(t), ts = std::min(tt, v0 / decel);
+    std::printf("t %s  travel %.4f m  Coulomb block %.4f m\n", t,
+                meanMaterialX(readCloud(c.path() / t, "particles")) - x0, v0 * ts - 0.5 * decel * ts * ts);
+  }
+  const ParticleCloud stopped = readCloud(c.path() / "0.7", "particles");
+  const ParticleCloud end = readCloud(c.path() / "1", "particles");
+  const double travel = meanMaterialX(end) - x0;
+  const double creep = isph::test::largestMaterialDisplacement(stopped, end);
+  std::printf("travel %.4f m against %.4f m (%+.2f%%); largest displacement from 0.7 to 1 s %.3g mm (dx/10 = %.3g mm)\n",
+              travel, stop, 100 * (travel / stop - 1), 1e3 * creep, 100 * dx);
+  EXPECT_NEAR(travel / stop, 1.0, 0.03) << "stopping distance against v0^2 / (2 g (tan delta cos theta - sin theta))";
+  EXPECT_LT(creep, 0.1 * dx) << "the block did not stay stopped";
 }
 
 }  // namespace
