@@ -53,11 +53,6 @@ class ImplicitViscousStep {
   // Over the velocity solvers (the components' and the coupled one): solves and hierarchies.
   int solvesDone() const;
   int preconditionersBuilt() const;
-  // The bed friction of the last solve: its passes, whether its stick/slip states settled,
-  // and how many particles stuck and slid at the end.
-  int lastFrictionPasses() const { return lastPasses_; }
-  bool lastFrictionSettled() const { return lastSettled_; }
-  const WallFrictionActiveSet& frictionStates() const { return activeSet_; }
   // Over the run: the solves with bed friction, how many of them settled, and their passes.
   int frictionSolves() const { return frictionSolves_; }
   int frictionSolvesSettled() const { return frictionSettled_; }

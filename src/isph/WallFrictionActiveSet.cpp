@@ -112,12 +112,4 @@ Vec3 WallFrictionActiveSet::force(std::size_t a) const {
   return state_[a] == State::slide ? Vec3(-capacity_[a] * dir_[a]) : Vec3(Vec3::Zero());
 }
 
-int WallFrictionActiveSet::sticking() const {
-  return static_cast<int>(std::count(state_.begin(), state_.end(), State::stick));
-}
-
-int WallFrictionActiveSet::sliding() const {
-  return static_cast<int>(std::count(state_.begin(), state_.end(), State::slide));
-}
-
 }  // namespace isph

@@ -60,8 +60,6 @@ class WallFrictionActiveSet {
   // many particles changed state (or, sliding, turned).
   int update(const std::vector<double>& xv, int dim);
 
-  int sticking() const;
-  int sliding() const;
 
  private:
   void classify(std::size_t a, const Vec3& ut, bool& changed);
