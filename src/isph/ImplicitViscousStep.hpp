@@ -62,6 +62,10 @@ class ImplicitViscousStep {
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
   void assembleCoupled(int dim, const std::vector<Vec3>& rhs);
+  // The viscous increment u* − uⁿ − dt f of each material particle, by origId: the next
+  // step's warm start.
+  template <class Force>
+  void keepIncrement(const ParticleSystem& ps, double dt, const Force& force, const std::vector<Vec3>& ustar);
 
   std::vector<std::unique_ptr<LinearSolver>> solvers_;
   std::unique_ptr<LinearSolver> coupledSolver_;
@@ -72,6 +76,8 @@ class ImplicitViscousStep {
   WallFrictionActiveSet activeSet_;
   int lastPasses_ = 0;
   bool lastSettled_ = true;
+  std::vector<Vec3> keptIncrement_;
+  double keptDt_ = 0;
   int frictionSolves_ = 0, frictionSettled_ = 0, frictionPassesDone_ = 0;
 };
 
