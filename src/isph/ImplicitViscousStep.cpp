@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Log.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 
@@ -22,6 +23,11 @@ Vec3 velocityOf(const std::vector<double>& xv, std::size_t a, int dim) {
 
 ImplicitViscousStep::ImplicitViscousStep(const Dictionary& solverDict, int dimension, int frictionPasses)
     : maxFrictionPasses_(frictionPasses) {
+  warmFromLastIncrement_ =
+      solverDict.getChoiceOrDefault("warmStart", {"predictor", "lastIncrement"}, "predictor") == "lastIncrement";
+  info("    velocity solve warm start: {}", warmFromLastIncrement_
+                                                  ? "the explicit predictor plus the last step's viscous increment"
+                                                  : "the explicit predictor u + dt g");
   static const char* names[] = {"Ux", "Uy", "Uz"};
   for (int d = 0; d < dimension; ++d) solvers_.push_back(makeLinearSolver(solverDict, names[d]));
   coupledSolver_ = makeLinearSolver(solverDict, "U");
@@ -123,12 +129,10 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   const std::size_t n = static_cast<std::size_t>(nMat);
   std::vector<SolverPerformance> perf;
   std::vector<double> x(n);
+  // Warm start (`U { warmStart }`): the explicit predictor, or that plus the last step's
+  // viscous increment (by particle, scaled by dt/dt_last).
   ustar.assign(ps.size(), Vec3::Zero());
-  // Warm start: the explicit predictor, plus the viscous increment of the last step (by
-  // particle, scaled by dt/dt_last), which carries most of this step's: in the 2 mm column
-  // collapse it took a fifth off the velocity solve's iterations (9.46 -> 7.94 per solve,
-  // and 6 % fewer stick/slip passes; git log).
-  const bool useKept = keptDt_ > 0;
+  const bool useKept = warmFromLastIncrement_ && keptDt_ > 0;
   for (std::size_t a = 0; a < n; ++a) {
     ustar[a] = c.U[a] + dt * force(a);
     const auto id = static_cast<std::size_t>(c.origId[a]);
@@ -188,6 +192,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
 template <class Force>
 void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, const Force& force,
                                         const std::vector<Vec3>& ustar) {
+  if (!warmFromLastIncrement_) return;
   const auto& c = ps.cloud;
   std::size_t size = 0;
   for (std::size_t a = 0; a < ps.nMaterial; ++a) size = std::max(size, static_cast<std::size_t>(c.origId[a]) + 1);

@@ -6,7 +6,12 @@
 //   κ_ab = −m_a m_b (η_a+η_b)/(ρ_a ρ_b) (x_ab·∇_a W_ab)/(r_ab² + 0.01h²) ≥ 0   (Morris form)
 //
 // The matrix is symmetric positive definite (a mass term plus an M-matrix Laplacian), so
-// PCG with BoomerAMG solves it; its settings are `U { ... }` in system/isphSolution. Walls
+// PCG with BoomerAMG solves it; its settings are `U { ... }` in system/isphSolution, where
+// `warmStart` chooses the initial guess: `predictor` (the default), u* = uⁿ + dt g, or
+// `lastIncrement`, that plus the last step's viscous increment u* − uⁿ − dt g of the particle
+// (scaled by dt/dt_last). In slow, largely rigid flows the increment changes little from step
+// to step and the second saves about a fifth of the iterations (column collapse, granular
+// slope); in fast flow onto a barrier it costs a tenth more (velocitySolve/README.md). Walls
 // (u_w = 0) add κ_aw to the diagonal for materials that stick to walls, with κ_aw (dt g +
 // (u_aⁿ·n) n) on the right: the no-slip term acts on the tangential velocity of time n and
 // leaves the wall-normal motion and the gravity increment to the PPE, as the explicit form
@@ -76,6 +81,7 @@ class ImplicitViscousStep {
   WallFrictionActiveSet activeSet_;
   int lastPasses_ = 0;
   bool lastSettled_ = true;
+  bool warmFromLastIncrement_ = false;  // U { warmStart lastIncrement; }
   std::vector<Vec3> keptIncrement_;
   double keptDt_ = 0;
   int frictionSolves_ = 0, frictionSettled_ = 0, frictionPassesDone_ = 0;

@@ -136,4 +136,22 @@ inline double largestMaterialDisplacement(const ParticleCloud& start, const Part
   return largest;
 }
 
+// The largest differences in position and velocity between the same particles (by origId)
+// of two clouds, e.g. of two runs of one case that should agree.
+struct CloudDifference {
+  double position = 0;
+  double velocity = 0;
+};
+inline CloudDifference largestDifference(const ParticleCloud& A, const ParticleCloud& B) {
+  std::map<label, std::size_t> indexOf;
+  for (std::size_t i = 0; i < B.size(); ++i) indexOf[B.origId[i]] = i;
+  CloudDifference d;
+  for (std::size_t i = 0; i < A.size(); ++i) {
+    const std::size_t j = indexOf.at(A.origId[i]);
+    d.position = std::max(d.position, (A.positions[i] - B.positions[j]).norm());
+    d.velocity = std::max(d.velocity, (A.U[i] - B.U[j]).norm());
+  }
+  return d;
+}
+
 }  // namespace isph::test

@@ -18,6 +18,8 @@
 namespace {
 
 using isph::test::CaseRunner;
+using isph::test::largestDifference;
+using isph::test::largestMaterialDisplacement;
 using namespace isph;
 
 void checkThreadCounts(const std::string& tutorial, const std::string& name, double dx, const std::string& endTime,
@@ -37,18 +39,8 @@ void checkThreadCounts(const std::string& tutorial, const std::string& name, dou
   const ParticleCloud A = readCloud(one.path() / endTime, "particles");
   const ParticleCloud B = readCloud(two.path() / endTime, "particles");
   ASSERT_EQ(A.size(), B.size());
-  std::map<label, std::size_t> indexOf;
-  for (std::size_t i = 0; i < B.size(); ++i) indexOf[B.origId[i]] = i;
-  double maxDx = 0, maxDu = 0, moved = 0;
-  const ParticleCloud start = readCloud(one.path() / "0", "particles");
-  std::map<label, Vec3> initial;
-  for (std::size_t i = 0; i < start.size(); ++i) initial[start.origId[i]] = start.positions[i];
-  for (std::size_t i = 0; i < A.size(); ++i) {
-    const std::size_t j = indexOf.at(A.origId[i]);
-    maxDx = std::max(maxDx, (A.positions[i] - B.positions[j]).norm());
-    maxDu = std::max(maxDu, (A.U[i] - B.U[j]).norm());
-    moved = std::max(moved, (A.positions[i] - initial.at(A.origId[i])).norm());
-  }
+  const auto [maxDx, maxDu] = largestDifference(A, B);
+  const double moved = largestMaterialDisplacement(readCloud(one.path() / "0", "particles"), A);
   std::printf("%s: 1 against 2 threads: position %.3g dx, velocity %.3g m/s (the material moved up to %.3g dx)\n",
               name.c_str(), maxDx / dx, maxDu, moved / dx);
   EXPECT_GT(moved, 2 * dx) << "the case must move for the comparison to mean something";
