@@ -1,7 +1,7 @@
 #include "isph/ImplicitViscousStep.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/Log.hpp"
