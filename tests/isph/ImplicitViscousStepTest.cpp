@@ -7,9 +7,7 @@
 // largely rigid flow (about a fifth over the 2 mm run: velocitySolve/README.md).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <fstream>
-#include <map>
 #include <regex>
 #include <string>
 

@@ -3,9 +3,7 @@
 // p, origId, and the time step in its time state; with method wcsph also the densities).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "CaseRunner.hpp"
 #include "particles/CloudIO.hpp"

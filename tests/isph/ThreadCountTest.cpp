@@ -8,8 +8,6 @@
 // weakly-compressible step (the dam break).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <map>
 #include <string>
 
 #include "CaseRunner.hpp"
