@@ -30,10 +30,11 @@
 //                                    // separated as inelastic contacts (0: off)
 //   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6 (only when a
 //                                    // material has one): semi-implicit solve or explicit sum
-//   incrementalPressure granular;    // | all | none: with the implicit term, the viscous
+//   incrementalPressure none;        // | granular | all: with the implicit term, the viscous
 //                                    // solve sees the pressure force of the last step and
-//                                    // Eq. 11 corrects with the change (IsphSolver.hpp); by
-//                                    // default in scenes with a granular material
+//                                    // Eq. 11 corrects with the change (IsphSolver.hpp), in
+//                                    // scenes with a granular material or in all; default none
+//                                    // (slidingBlock uses granular)
 //   wallFriction     { slipSpeed 1e-5; passes 10; }  // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
 //                                    // this many velocity solves per step to settle the
