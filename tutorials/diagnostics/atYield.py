@@ -14,6 +14,8 @@ import sys
 
 from fields import fields
 
+if len(sys.argv) < 6:
+    sys.exit(__doc__)
 case, time, dx = sys.argv[1], sys.argv[2], float(sys.argv[3])
 phis = [float(v) for v in sys.argv[4].split(',')]
 rhos = [float(v) for v in sys.argv[5].split(',')]

@@ -12,6 +12,8 @@ import sys
 
 from fields import fields, times
 
+if len(sys.argv) < 2:
+    sys.exit(__doc__)
 case = sys.argv[1]
 H = float(sys.argv[2]) if len(sys.argv) > 2 else 0.1
 ts = times(case)

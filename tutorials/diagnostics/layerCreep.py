@@ -15,6 +15,8 @@ import sys
 
 from fields import fields, times
 
+if len(sys.argv) < 3:
+    sys.exit(__doc__)
 case, time = sys.argv[1], sys.argv[2]
 args = sys.argv[3:]
 layered = None
