@@ -285,12 +285,6 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
       timer_.add("viscous assembly", perf.assemblySeconds);
       timer_.add("viscous setup", perf.setupSeconds);
       timer_.add("viscous solve", perf.solveSeconds);
-      if (!perf.converged) {
-        fatalError(fmt::format("the implicit viscous step did not converge for {} at time {}: residual {:.3g} "
-                               "after {} iterations.\n    The last written time directory is intact; try more "
-                               "maxIter or another preconditioner in system/isphSolution U, or a smaller etaMax.",
-                               perf.field, time.timeName(), perf.finalResidual, perf.iterations));
-      }
     }
     maxViscousAcceleration_ = 0;
     return;
@@ -350,6 +344,10 @@ StepReport IsphSolver::step(const Time& time) {
     prepareWallPressure(freeSurface_->flags());
   }
   intermediateVelocity(time, report);
+  if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
+    viscous_->renumbered();  // nothing has moved yet; a retry (stepWithRetry) builds a fresh hierarchy for U
+    return report;
+  }
   {
     if (!lagged_.empty()) {
       // The increment that the step applies to the predictor that saw pⁿ.
@@ -361,7 +359,7 @@ StepReport IsphSolver::step(const Time& time) {
     timer_.add("PPE setup", report.ppe.setupSeconds);
     timer_.add("PPE solve", report.ppe.solveSeconds);
   }
-  if (!report.ppe.converged) {  // the particles as at the step start; the caller decides (stepWithRetry)
+  if (report.failedSolve()) {  // the particles as at the step start; the caller decides (stepWithRetry)
     ps_.cloud.p = pStart_;
     return report;
   }

@@ -51,6 +51,15 @@ struct StepReport {
   double densityVariation = -1;  // wcsph: the largest |ρ/ρ0 − 1| of the material (−1: isph)
   double maxSpeed = 0;
   double courant = 0;
+
+  // The first solve of the step that did not converge (the viscous ones, then the PPE), or
+  // null: the particles are then as at the step start (stepWithRetry redoes the step).
+  const SolverPerformance* failedSolve() const {
+    for (const auto& v : viscous) {
+      if (!v.converged) return &v;
+    }
+    return ppe.converged ? nullptr : &ppe;
+  }
 };
 
 class IsphSolver {
@@ -62,9 +71,9 @@ class IsphSolver {
 
   // The time step for the next step (adjustTimeStep), with the limit that set it.
   TimeStepLimits nextDeltaT(const Time& time) const;
-  // Advance the particles by time.deltaT() (call after ++time). When the PPE does not
-  // converge (report.ppe.converged false) the particles are left as at the step start, so
-  // that the step can be redone with a smaller deltaT (stepWithRetry).
+  // Advance the particles by time.deltaT() (call after ++time). When the implicit viscous
+  // step or the PPE does not converge (report.failedSolve()) the particles are left as at the
+  // step start, so that the step can be redone with a smaller deltaT (stepWithRetry).
   StepReport step(const Time& time);
   // Write the cloud into the current time directory (atomically) and the time state.
   void write(Time& time);

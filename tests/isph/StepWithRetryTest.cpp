@@ -26,19 +26,27 @@ class StepWithRetryTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// A step whose PPE converges only when deltaT is at most `largest`; counts its calls.
+// A step whose PPE (field p) or implicit viscous solve (field U) converges only when deltaT is
+// at most `largest`; counts its calls. A failed viscous solve leaves the PPE unsolved (the real
+// step returns before it).
 struct FakeStep {
   double largest;
+  std::string field = "p";
   int calls = 0;
   StepReport operator()(const Time& time) {
     ++calls;
     const bool converged = time.deltaT() <= largest;
+    const auto perf = [](const std::string& name, const std::string& f, bool ok, double residual, int iterations) {
+      return SolverPerformance{.solverName = name, .field = f, .finalResidual = ok ? 1e-10 : residual,
+                               .iterations = iterations, .converged = ok};
+    };
     StepReport r;
-    r.ppe = SolverPerformance{.solverName = std::string("fake"),
-                              .field = std::string("p"),
-                              .finalResidual = converged ? 1e-10 : 0.5,
-                              .iterations = 1,
-                              .converged = converged};
+    if (field == "U") {
+      r.viscous.push_back(perf("fakeU", "U", converged, 1.6e-4, 200));
+      if (converged) r.ppe = perf("fake", "p", true, 0, 1);
+    } else {
+      r.ppe = perf("fake", "p", converged, 0.5, 1);
+    }
     return r;
   }
 };
@@ -95,6 +103,38 @@ TEST_F(StepWithRetryTest, SecondFailureIsFatalAndNamesBothAttempts) {
     EXPECT_NE(m.find("last written time directory is intact"), std::string::npos) << m;
   }
   EXPECT_EQ(step.calls, 2) << "one retry, no more";
+}
+
+TEST_F(StepWithRetryTest, ViscousFailureIsRetriedWithHalfTheStep) {
+  controlDict("startFrom startTime; startTime 0; endTime 1; deltaT 0.1; writeInterval 10;\n");
+  Time time(dir_);
+  ++time;
+  FakeStep step{0.06, "U"};
+  const int warnings = warningCount();
+  const StepReport r = stepWithRetry(time, std::ref(step));
+  EXPECT_EQ(r.failedSolve(), nullptr);
+  EXPECT_EQ(step.calls, 2);
+  EXPECT_EQ(warningCount(), warnings + 1);
+  EXPECT_DOUBLE_EQ(time.value(), 0.05);
+}
+
+TEST_F(StepWithRetryTest, SecondViscousFailureIsFatalAndSaysWhichSolve) {
+  controlDict("startFrom startTime; startTime 0; endTime 1; deltaT 0.1; writeInterval 10;\n");
+  Time time(dir_);
+  ++time;
+  FakeStep step{0.01, "U"};
+  try {
+    stepWithRetry(time, std::ref(step));
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("the implicit viscous step (field U) did not converge, after one retry"), std::string::npos) << m;
+    EXPECT_NE(m.find("first attempt: time 0.1 (deltaT 0.1): fakeU residual 0.00016 after 200 iterations"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("another preconditioner for U"), std::string::npos) << "where to act\n" << m;
+  }
+  EXPECT_EQ(step.calls, 2);
 }
 
 }  // namespace
