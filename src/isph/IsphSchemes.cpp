@@ -87,8 +87,9 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
     requireRange(sh, "coefficient", s.shiftingCoefficient, 0.0, 20.0);
     s.maxShift = sh.getOrDefault("maxShift", s.maxShift);
     requireRange(sh, "maxShift", s.maxShift, 0.0, 1.0);
+    s.shiftPairsNearSurface = sh.getChoiceOrDefault("nearSurface", {"none", "pairs"}, "none") == "pairs";
   }
-  sh.checkKeywords({"coefficient", "maxShift"});
+  sh.checkKeywords({"coefficient", "maxShift", "nearSurface"});
 
   const Dictionary ts = d.subDictOrEmpty("timeStep");
   s.forceFactor = ts.getOrDefault("forceFactor", s.forceFactor);
@@ -169,9 +170,9 @@ std::string IsphSchemes::describe() const {
                          : "unknowns of the PPE in granular materials, p = 0 in fluids");
   out += fmt::format("    tension cut-off: {}\n", tensionCutoff ? "on, p >= 0 after the PPE solve" : "off");
   if (shifting) {
-    out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx, normal part removed "
-                       "at the free surface\n",
-                       shiftingCoefficient, maxShift);
+    out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx; none at the free surface, "
+                       "{} next to it\n",
+                       shiftingCoefficient, maxShift, shiftPairsNearSurface ? "the pair term alone" : "none");
   } else {
     out += "    particle shifting: off\n";
   }

@@ -23,7 +23,9 @@
 //                      compressed granular; }  // | none | all: flagged particles that are
 //                    compressed stay unknowns of the PPE (for granular materials by default)
 //   tensionCutoff    on;             // p ← max(p, 0) after the solve (no tension)
-//   shifting         { enabled on; coefficient 2; maxShift 0.2; }   // Lind et al. (2012)
+//   shifting         { enabled on; coefficient 2; maxShift 0.2; nearSurface none; }
+//                    // Lind et al. (2012); nearSurface pairs: next to the free surface the
+//                    // pair term alone (ParticleShifting.hpp), none: no shift there
 //   timeStep         { forceFactor 0.25; viscousFactor 0.125; maxGrowth 1.1; }
 //   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
 //   collision        { distance 0.5; }   // in dx: material pairs closer than this are
@@ -80,6 +82,7 @@ struct IsphSchemes {
   bool shifting = true;
   double shiftingCoefficient = 2.0;  // A in D = A h |u| dt
   double maxShift = 0.2;             // in dx
+  bool shiftPairsNearSurface = false;  // shifting { nearSurface pairs; }
 
   double forceFactor = 0.25;     // dt ≤ C_f √(h/|f|)
   double viscousFactor = 0.125;  // dt ≤ C_ν ρ h²/η

@@ -87,4 +87,24 @@ TEST(IsphSchemes, UnknownMethodIsAnError) {
 }
 
 }  // namespace
+TEST(IsphSchemes, ShiftingNearTheSurfaceIsOffUnlessPairsAreAskedFor) {
+  EXPECT_FALSE(schemesFrom("").shiftPairsNearSurface);
+  EXPECT_NE(schemesFrom("").describe().find("none next to it"), std::string::npos) << schemesFrom("").describe();
+  const IsphSchemes s = schemesFrom("shifting { nearSurface pairs; }\n");
+  EXPECT_TRUE(s.shiftPairsNearSurface);
+  EXPECT_NE(s.describe().find("the pair term alone next to it"), std::string::npos) << s.describe();
+}
+
+TEST(IsphSchemes, UnknownNearSurfaceShiftingIsAnErrorAtItsLine) {
+  try {
+    schemesFrom("shifting\n{\n    nearSurface all;\n}\n");
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("nearSurface"), std::string::npos) << m;
+    EXPECT_NE(m.find("pairs"), std::string::npos) << "lists the valid choices\n" << m;
+    EXPECT_EQ(e.where().line, 3);
+  }
+}
+
 }  // namespace isph
