@@ -132,6 +132,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   // Warm start (`U { warmStart }`): the explicit predictor, or that plus the last step's
   // viscous increment (by particle, scaled by dt/dt_last).
   ustar.assign(ps.size(), Vec3::Zero());
+  frictionForce_.clear();
   const bool useKept = warmFromLastIncrement_ && keptDt_ > 0;
   for (std::size_t a = 0; a < n; ++a) {
     ustar[a] = c.U[a] + dt * force(a);
@@ -164,10 +165,15 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       const bool last = pass + 1 == maxFrictionPasses_;
       perf.push_back(last ? coupledSolver_->solveFinal(coupled_, xv) : coupledSolver_->solve(coupled_, xv));
       ++lastPasses_;
+      // The friction force of this solve, in the states it was solved with (before they are
+      // classified again): what the walls take (WallFriction::wallTraction).
+      frictionForce_.assign(n, Vec3::Zero());
+      for (std::size_t a = 0; a < n; ++a) frictionForce_[a] = activeSet_.applied(a, velocityOf(xv, a, dim), dim);
       const bool settled = activeSet_.update(xv, dim) == 0;
       if (settled && !last && coupledSolver_->stopsAtRelTol()) {
         coupledSolver_->keepPreconditionerForNextSolve();  // the same system, to the tolerance
         perf.push_back(coupledSolver_->solveFinal(coupled_, xv));
+        for (std::size_t a = 0; a < n; ++a) frictionForce_[a] = activeSet_.applied(a, velocityOf(xv, a, dim), dim);
       }
       for (std::size_t a = 0; a < n; ++a) ustar[a] = velocityOf(xv, a, dim);
       lastSettled_ = settled;

@@ -63,6 +63,9 @@ class ImplicitViscousStep {
   int frictionSolvesSettled() const { return frictionSettled_; }
   int frictionPassesDone() const { return frictionPassesDone_; }
   int maxFrictionPasses() const { return maxFrictionPasses_; }
+  // The Coulomb force of the walls on each material particle in the last solve [N, per metre
+  // in 2D]: tangential, zero off the friction walls; empty when that solve had no friction.
+  const std::vector<Vec3>& frictionForce() const { return frictionForce_; }
 
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
@@ -84,6 +87,7 @@ class ImplicitViscousStep {
   bool warmFromLastIncrement_ = false;  // U { warmStart lastIncrement; }
   std::vector<Vec3> keptIncrement_;
   double keptDt_ = 0;
+  std::vector<Vec3> frictionForce_;
   int frictionSolves_ = 0, frictionSettled_ = 0, frictionPassesDone_ = 0;
 };
 

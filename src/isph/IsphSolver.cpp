@@ -98,6 +98,7 @@ IsphSolver::IsphSolver(const Time& time) {
   solution.checkKeywords({"U"});
   if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
   friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed);
+  if (friction_->active()) wallFriction_.assign(ps_.size(), Vec3::Zero());  // (none before the first step)
   ps_.frictionWall.assign(ps_.size(), 0);
   for (std::size_t b = ps_.wallBegin(); b < ps_.size(); ++b) {
     const std::size_t w = ps_.isWall(b) ? b : static_cast<std::size_t>(ps_.parentWall[b]);
@@ -287,11 +288,23 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
       timer_.add("viscous solve", perf.solveSeconds);
     }
     maxViscousAcceleration_ = 0;
+    if (friction_->active()) wallFriction_ = friction_->wallTraction(ps_, viscous_->frictionForce());
     return;
   }
   auto t = timer_.scope("intermediate velocity");
   maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, kernel_->h(), ustar_);
-  if (friction_->active()) friction_->applyExplicit(ps_, dt, ustar_);
+  applyExplicitFriction(dt);
+}
+
+void IsphSolver::applyExplicitFriction(double dt) {
+  if (!friction_->active()) return;
+  std::vector<Vec3> applied;
+  friction_->applyExplicit(ps_, dt, ustar_, &applied);
+  wallFriction_ = friction_->wallTraction(ps_, applied);
+}
+
+const std::vector<Vec3>* IsphSolver::wallFriction() const {
+  return friction_->active() ? &wallFriction_ : nullptr;
 }
 
 TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
@@ -424,7 +437,7 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
     }
     // Coulomb friction, limited by the wall pressures (as the explicit projection step does).
     friction_->update(ps_);
-    if (friction_->active()) friction_->applyExplicit(ps_, dt, ustar_);
+    applyExplicitFriction(dt);
     maxAcceleration_ = 0;
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {  // symplectic Euler: u, then x with the new u
       maxAcceleration_ = std::max(maxAcceleration_, (ustar_[a] - ps_.cloud.U[a]).norm() / dt);
@@ -503,6 +516,9 @@ void IsphSolver::write(Time& time) {
   writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", flags, options);
   if (const auto* tau = deviatoricStress()) {
     writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", *tau, options);
+  }
+  if (const auto* friction = wallFriction()) {
+    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "wallFriction", *friction, options);
   }
   if (wcsph_) writeField(dir.path() / "lagrangian" / ps_.cloud.name / "rho", wcsph_->density(), options);
   time.writeTimeState(dir.path());

@@ -84,6 +84,10 @@ class IsphSolver {
   // τ = 2 η D of every particle after the last step (zero for walls), or null when no
   // material has a deviatoric stress. Computed once per step, on first request.
   const std::vector<SymmTensor>* deviatoricStress();
+  // The traction of the material on each wall particle through the Coulomb wall friction of
+  // the last step (WallFriction::wallTraction) [Pa], zero off the friction walls; null when no
+  // wall has friction for the scene's materials. Written as the field `wallFriction`.
+  const std::vector<Vec3>* wallFriction() const;
   // Material particles found behind a wall surface since the start of the run.
   std::size_t wallCrossings() const { return totalWallCrossings_; }
   // "AMG hierarchies built for p: N of M solves" (and for U), for the end of the log.
@@ -96,6 +100,8 @@ class IsphSolver {
   // The wall pull limits and tangential pressure gradients that WallBoundaryPressure uses.
   void prepareWallPressure(const std::vector<char>& freeSurface);
   void initialiseWallPressure();
+  // The explicit Coulomb friction on u* and the walls' share of it (wallFriction_).
+  void applyExplicitFriction(double dt);
   // Strain rate and η of the material particles at the current state (empty η if inviscid).
   void updateRheology();
   void intermediateVelocity(const Time& time, StepReport& report);
@@ -125,6 +131,7 @@ class IsphSolver {
   std::vector<double> eta_;  // effective viscosity of the material particles (time n)
   double maxNu_ = 0;          // the largest η/ρ of the last step (explicit viscous limit)
   std::unique_ptr<WallFriction> friction_;
+  std::vector<Vec3> wallFriction_;  // per particle: the walls' friction traction [Pa]
   std::unique_ptr<ImplicitViscousStep> viscous_;
   std::unique_ptr<WeaklyCompressibleStep> wcsph_;  // method wcsph (null: the projection)
   double maxAcceleration_ = 0;  // wcsph: the largest |du/dt| of the last step (force limit)

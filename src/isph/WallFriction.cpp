@@ -81,8 +81,10 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
   }
 }
 
-void WallFriction::applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u) const {
+void WallFriction::applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u,
+                                 std::vector<Vec3>* applied) const {
   const long nMat = static_cast<long>(ps.nMaterial);
+  if (applied) applied->assign(ps.nMaterial, Vec3::Zero());
 #pragma omp parallel for schedule(static)
   for (long ia = 0; ia < nMat; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
@@ -92,7 +94,46 @@ void WallFriction::applyExplicit(const ParticleSystem& ps, double dt, std::vecto
     if (speed <= 0) continue;
     const double loss = std::min(dt * capacity_[a] / ps.cloud.mass[a], speed);  // cannot reverse u_t
     u[a] -= loss / speed * ut;
+    if (applied) (*applied)[a] = -(ps.cloud.mass[a] * loss / (dt * speed)) * ut;
   }
+}
+
+std::vector<Vec3> WallFriction::wallTraction(const ParticleSystem& ps, const std::vector<Vec3>& onMaterial) const {
+  const auto& c = ps.cloud;
+  const auto& nl = ps.neighbours;
+  std::vector<Vec3> traction(ps.size(), Vec3::Zero());
+  if (!active_ || onMaterial.empty()) return traction;
+  auto frictionWall = [&](std::size_t w) {
+    return ps.isWall(w) && tanDelta_[static_cast<std::size_t>(c.patch[w])] > 0;
+  };
+  // f_a / Σ_w' W_aw' per material particle, then gathered by each wall particle (no scatter).
+  std::vector<Vec3> share(ps.nMaterial, Vec3::Zero());
+  const long nMat = static_cast<long>(ps.nMaterial);
+#pragma omp parallel for schedule(static)
+  for (long ia = 0; ia < nMat; ++ia) {
+    const auto a = static_cast<std::size_t>(ia);
+    if (onMaterial[a].squaredNorm() == 0) continue;
+    double sum = 0;
+    for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      if (frictionWall(static_cast<std::size_t>(nl.index[kk]))) sum += nl.W[kk];
+    }
+    if (sum > 0) share[a] = onMaterial[a] / sum;
+  }
+  const double area = std::pow(ps.dx, ps.dimension - 1);
+#pragma omp parallel for schedule(static)
+  for (long iw = static_cast<long>(ps.wallBegin()); iw < static_cast<long>(ps.dummyBegin()); ++iw) {
+    const auto w = static_cast<std::size_t>(iw);
+    if (!frictionWall(w)) continue;
+    Vec3 t = Vec3::Zero();
+    for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto a = static_cast<std::size_t>(nl.index[kk]);
+      if (ps.isMaterial(a)) t -= share[a] * nl.W[kk];
+    }
+    traction[w] = t / area;
+  }
+  return traction;
 }
 
 }  // namespace isph

@@ -54,8 +54,19 @@ class WallFriction {
 
   // The tangential part of u relative to the wall next to a.
   Vec3 tangential(std::size_t a, const Vec3& u) const { return u - normal_[a] * normal_[a].dot(u); }
-  // The explicit capped update of the material velocities u (size ≥ nMaterial).
-  void applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u) const;
+  // The explicit capped update of the material velocities u (size ≥ nMaterial); `applied`
+  // (if given) receives the friction force on each material particle, m_a Δu_a/dt.
+  void applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u,
+                     std::vector<Vec3>* applied = nullptr) const;
+
+  // The traction the material exerts on each wall particle through the friction [Pa; N/m² in
+  // 3D, N/m per metre of width in 2D after × A_w]: the reaction to the forces f_a of the walls
+  // on the material (`onMaterial`, per material particle, from the step just taken), each
+  // shared among a's friction-wall neighbours w in proportion to W_aw, as its capacity was
+  // gathered:  t_w = −Σ_a f_a W_aw / (A_w Σ_w' W_aw').  So Σ_w A_w t_w = −Σ_a f_a exactly
+  // (Newton's third law). Size ps.size(); zero but on friction-wall particles. Uses the
+  // neighbour list of the step (call before it is rebuilt).
+  std::vector<Vec3> wallTraction(const ParticleSystem& ps, const std::vector<Vec3>& onMaterial) const;
 
  private:
   bool active_ = false;

@@ -112,4 +112,13 @@ Vec3 WallFrictionActiveSet::force(std::size_t a) const {
   return state_[a] == State::slide ? Vec3(-capacity_[a] * dir_[a]) : Vec3(Vec3::Zero());
 }
 
+Vec3 WallFrictionActiveSet::applied(std::size_t a, const Vec3& u, int dim) const {
+  Vec3 f = force(a);
+  if (state_[a] == State::free) return f;
+  for (int d = 0; d < dim; ++d) {
+    for (int e = 0; e < dim; ++e) f[d] -= block(a, d, e) * u[e];
+  }
+  return f;
+}
+
 }  // namespace isph

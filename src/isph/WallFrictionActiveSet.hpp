@@ -55,6 +55,9 @@ class WallFrictionActiveSet {
   double block(std::size_t a, int d, int e) const;
   // The constant force on a's right-hand side: −F_a t while sliding, else 0.
   Vec3 force(std::size_t a) const;
+  // The friction force of the wall on a in the solve of the current states with velocity u:
+  // force(a) − block(a) u (stick: −K_a (I − n nᵀ) u; slide: −F_a t, plus the lateral term in 3D).
+  Vec3 applied(std::size_t a, const Vec3& u, int dim) const;
 
   // Classify again from the solved velocities (interleaved, dim per particle); returns how
   // many particles changed state (or, sliding, turned).

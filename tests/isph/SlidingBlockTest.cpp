@@ -7,9 +7,16 @@
 // moves more than dx/10 over the 1 s (the creep limit). Launched down that plane at
 // 0.5 m/s it must decelerate as a Coulomb block, a = g (tan δ cos θ − sin θ) = 1.0437 m/s²,
 // stop after v0²/2a = 0.1198 m (within 3 %) at t = v0/a = 0.48 s, and then stay stopped.
+// The force of the block on the bed (the patchForces function object every step, and
+// sampleForces on the written times) must balance the block's momentum: normal m g cos θ,
+// and along the bed m g tan δ cos θ while it slides (the Coulomb friction, carried to the wall
+// particles as the field wallFriction) or m g sin θ while it stays put; the means over
+// 0.2-1 s within 3 % (an acceleration error of 3 % is 1.4 % of the sliding friction force).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "CaseRunner.hpp"
@@ -19,6 +26,66 @@ namespace {
 
 using isph::test::CaseRunner;
 using namespace isph;
+namespace fs = std::filesystem;
+
+// The bed's force history from the solver (function object bedForce) and sampleForces.
+void addBedForces(CaseRunner& c) {
+  c.set("system/controlDict", "writeFormat", "binary");  // exact doubles for sampleForces
+  std::ofstream(c.path() / "system/controlDict", std::ios::app)
+      << "\nfunctions\n{\n    bedForce\n    {\n        type patchForces;\n        patches (bed);\n    }\n}\n";
+  std::ofstream(c.path() / "system/sampleForcesDict")
+      << "FoamFile { version 2.0; format ascii; class dictionary; object sampleForcesDict; }\n"
+         "bed { patches (bed); }\n";
+}
+
+// Rows (time, columns after it) of a force table, for t in [from, to].
+std::vector<std::vector<double>> forceRows(const fs::path& file, double from, double to) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(isph::test::readText(file));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    std::vector<double> v;
+    for (double x; row >> x;) v.push_back(x);
+    if (!v.empty() && v[0] >= from - 1e-9 && v[0] <= to + 1e-9) rows.push_back(v);
+  }
+  return rows;
+}
+
+double materialMass(const ParticleCloud& cloud) {
+  double m = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) m += cloud.kind[i] == 0 ? cloud.mass[i] : 0.0;
+  return m;
+}
+
+// Mean normal and tangential force on the bed over 0.2-1 s against the momentum balance, and
+// sampleForces' rows against the solver's at the written times (columns: Time Fx Fy Fn Ft ...
+// Ffx Ffy Ffn Fft: Fn = 4, Ft = 5, Fft = 17).
+void checkBedForces(CaseRunner& c, double normal, double tangential, const char* what) {
+  ASSERT_EQ(c.run(SAMPLEFORCES_EXE, "sampleForces"), 0);
+  const auto solver = forceRows(c.path() / "postProcessing/bedForce/0/force.dat", 0.2, 1.0);
+  const auto utility = forceRows(c.path() / "postProcessing/sampleForces/0/bed.dat", 0.2, 1.0);
+  ASSERT_GT(solver.size(), 100u) << "one row per step";
+  ASSERT_EQ(utility.size(), 9u) << "written times 0.2 to 1";
+  double fn = 0, ft = 0, ff = 0;
+  for (const auto& r : solver) {
+    fn += r[3] / solver.size();
+    ft += r[4] / solver.size();
+    ff += r[16] / solver.size();
+  }
+  std::printf("bed, %s: mean Fn %.4g N/m (m g cos theta %.4g, %+.2f%%), Ft %.4g N/m (expected %.4g, %+.2f%%), "
+              "friction part %.4g N/m\n",
+              what, fn, normal, 100 * (fn / normal - 1), ft, tangential, 100 * (ft / tangential - 1), ff);
+  EXPECT_NEAR(fn / normal, 1.0, 0.03) << "normal force on the bed against m g cos theta";
+  EXPECT_NEAR(ft / tangential, 1.0, 0.03) << "force along the bed against the block's momentum balance";
+  for (const auto& u : utility) {
+    const auto it = std::find_if(solver.begin(), solver.end(), [&](const auto& r) { return std::abs(r[0] - u[0]) < 1e-9; });
+    ASSERT_NE(it, solver.end()) << "no solver row at written time " << u[0];
+    for (std::size_t k = 1; k < u.size(); ++k) {
+      EXPECT_NEAR((*it)[k], u[k], 1e-6 * std::abs(u[k]) + 1e-9) << "column " << k + 1 << " at time " << u[0];
+    }
+  }
+}
 
 double meanMaterialX(const ParticleCloud& cloud) {
   double sum = 0;
@@ -35,10 +102,13 @@ TEST(SlidingBlock, CentreOfMassAcceleratesAsACoulombBlock) {
   const double theta = 30 * M_PI / 180, delta = 20 * M_PI / 180, g = 9.81;
   const double exact = g * (std::sin(theta) - std::tan(delta) * std::cos(theta));
   CaseRunner c("slidingBlock", "slidingBlock");
+  ASSERT_NO_FATAL_FAILURE(addBedForces(c));
   ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
   EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
 
   const double x0 = meanMaterialX(readCloud(c.path() / "0", "particles"));
+  const double weight = g * materialMass(readCloud(c.path() / "0", "particles"));
+  checkBedForces(c, weight * std::cos(theta), weight * std::tan(delta) * std::cos(theta), "sliding");
   double num = 0, den = 0;
   for (int k = 1; k <= 10; ++k) {
     const double t = 0.1 * k;
@@ -57,11 +127,14 @@ TEST(SlidingBlock, CentreOfMassAcceleratesAsACoulombBlock) {
 }
 
 TEST(SlidingBlock, StaysPutWhenTheBedFrictionExceedsTheSlope) {
-  const double dx = 0.005;
+  const double dx = 0.005, theta = 30 * M_PI / 180, g = 9.81;
   CaseRunner c("slidingBlock", "slidingBlock");
   ASSERT_NO_FATAL_FAILURE(c.replaceText("system/particleMeshDict", "frictionAngle 20;", "frictionAngle 35;"));
+  ASSERT_NO_FATAL_FAILURE(addBedForces(c));
   ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
   EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+  const double weight = g * materialMass(readCloud(c.path() / "0", "particles"));
+  checkBedForces(c, weight * std::cos(theta), weight * std::sin(theta), "at rest");
 
   const ParticleCloud start = readCloud(c.path() / "0", "particles");
   const ParticleCloud end = readCloud(c.path() / "1", "particles");

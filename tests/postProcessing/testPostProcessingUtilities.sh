@@ -27,7 +27,7 @@ check "sampleForces runs on every time" test $? -eq 0
 dat="$work/tank/postProcessing/sampleForces/0/leftWall.dat"
 check "the .dat is written under the first time" test -s "$dat"
 check "the header names every column with its unit" \
-  grep -q "^# Time \[s\]	Fx \[N/m\]	Fy \[N/m\]	Fn \[N/m\]	Ft \[N/m\]	Fpx \[N/m\].*	Mz \[N m/m\]	Mpz \[N m/m\]	Mdz \[N m/m\]	nWall \[-\]$" "$dat"
+  grep -q "^# Time \[s\]	Fx \[N/m\]	Fy \[N/m\]	Fn \[N/m\]	Ft \[N/m\]	Fpx \[N/m\].*	Mz \[N m/m\]	Mpz \[N m/m\]	Mdz \[N m/m\]	Mfz \[N m/m\]	nWall \[-\]$" "$dat"
 check "one row per time" test "$(grep -vc '^#' "$dat")" -eq 2
 check "a set with a width gives forces in N" grep -q "Fx \[N\]" "$work/tank/postProcessing/sampleForces/0/sideWalls.dat"
 check "no temporary file is left" bash -c "[ -z \"\$(ls -A '$work/tank/postProcessing/sampleForces/0' | grep '^\\.')\" ]"

@@ -63,7 +63,8 @@ void run(const isph::ArgList& args) {
     // (Only when one is due: the stress is a second strain-rate pass, not to be paid every step.)
     if (functions.anyDue(time)) {
       functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
-                               .kernel = &solver.kernel(), .neighbours = nullptr});
+                               .kernel = &solver.kernel(), .neighbours = nullptr,
+                               .wallFriction = solver.wallFriction()});
     }
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);

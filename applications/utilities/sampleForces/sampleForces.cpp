@@ -52,8 +52,13 @@ void run(const isph::ArgList& args) {
     const isph::ParticleCloud cloud = isph::readCloud(timeDir, cloudName);
     const auto tau = isph::readDeviatoricStress(timeDir, cloudName, cloud.size());
     if (tau && !kernel) kernel = kernelFor(args.casePath(), cloud.properties);
-    const auto forces = isph::setForces(
-        {.cloud = cloud, .sets = sets, .tau = tau ? &*tau : nullptr, .kernel = kernel.get(), .neighbours = nullptr});
+    const auto friction = isph::readWallFriction(timeDir, cloudName, cloud.size());
+    const auto forces = isph::setForces({.cloud = cloud,
+                                         .sets = sets,
+                                         .tau = tau ? &*tau : nullptr,
+                                         .kernel = kernel.get(),
+                                         .neighbours = nullptr,
+                                         .wallFriction = friction ? &*friction : nullptr});
     for (std::size_t s = 0; s < sets.size(); ++s) {
       if (tables.size() == s) {
         tables.emplace_back(sets[s], cloud.properties.dimension);
@@ -61,9 +66,10 @@ void run(const isph::ArgList& args) {
       }
       text[s] += tables[s].row(time.value, forces[s]);
       const auto& f = forces[s];
-      isph::info("    {}: Fn {:.6g} (pressure {:.6g}, deviatoric {:.6g}), Ft {:.6g} [{}] on {} wall particles",
+      isph::info("    {}: Fn {:.6g} (pressure {:.6g}, deviatoric {:.6g}), Ft {:.6g} (friction {:.6g}) [{}] on {} wall "
+                 "particles",
                  sets[s].name, f.normal(f.total), f.normal(f.pressure), f.normal(f.deviatoric), f.tangential(f.total),
-                 tables[s].columns()[1].unit, f.nWall);
+                 f.tangential(f.friction), tables[s].columns()[1].unit, f.nWall);
     }
   }
 

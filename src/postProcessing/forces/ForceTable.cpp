@@ -20,12 +20,12 @@ ForceTable::ForceTable(const ForceSet& set, int dimension) : set_(set), dimensio
   const std::string force = perMetre ? "N/m" : "N";
   const std::string moment = perMetre ? "N m/m" : "N m";
   columns_.push_back({"Time", "s"});
-  for (const std::string part : {"F", "Fp", "Fd"}) {
+  for (const std::string part : {"F", "Fp", "Fd", "Ff"}) {
     for (int d = 0; d < dimension; ++d) columns_.push_back({part + axes[d], force});
     columns_.push_back({part + "n", force});
     columns_.push_back({part + "t", force});
   }
-  for (const std::string part : {"M", "Mp", "Md"}) {
+  for (const std::string part : {"M", "Mp", "Md", "Mf"}) {
     for (int d = dimension == 2 ? 2 : 0; d < 3; ++d) columns_.push_back({part + axes[d], moment});
   }
   columns_.push_back({"nWall", "-"});
@@ -47,15 +47,17 @@ std::string ForceTable::header(const PatchForces& first) const {
   } else {
     h += "\n";
   }
-  h += "# F = Fp + Fd: pressure part Fp = sum p A (-n), deviatoric part Fd = sum A tau.n over the wall "
-       "particles (n: wall normal, into the material)\n";
+  h += "# F = Fp + Fd + Ff: pressure part Fp = sum p A (-n), deviatoric part Fd = sum A tau.n, friction part "
+       "Ff = sum A t over the wall particles (n: wall normal, into the material; t: the Coulomb wall friction "
+       "traction; where the material slides on the walls the walls act on it by p and t only, and Fd = 0)\n";
   h += fmt::format("# n: normal component -F.nMean (positive into the structure), nMean = {}\n", vec(first.meanNormal));
   if (dimension_ == 2) {
     h += fmt::format("# t: tangential component F.t, t = nMean x z = {}\n", vec(first.tangent));
   } else {
     h += "# t: magnitude of the tangential part |F - (F.nMean) nMean|\n";
   }
-  h += "# M: moment about CofR (Mp, Md: of the pressure and deviatoric parts); nWall: wall particles summed\n";
+  h += "# M: moment about CofR (Mp, Md, Mf: of the pressure, deviatoric and friction parts); nWall: wall particles "
+       "summed\n";
   h += "#";
   for (std::size_t k = 0; k < columns_.size(); ++k) {
     h += fmt::format("{}{} [{}]", k ? "\t" : " ", columns_[k].name, columns_[k].unit);
@@ -66,12 +68,12 @@ std::string ForceTable::header(const PatchForces& first) const {
 std::string ForceTable::row(double time, const PatchForces& f) const {
   std::string r = fmt::format("{:.8g}", time);
   auto add = [&](double v) { r += fmt::format("\t{:.8g}", v == 0 ? 0.0 : v); };  // no "-0"
-  for (const Vec3* F : {&f.total, &f.pressure, &f.deviatoric}) {
+  for (const Vec3* F : {&f.total, &f.pressure, &f.deviatoric, &f.friction}) {
     for (int d = 0; d < dimension_; ++d) add((*F)[d]);
     add(f.normal(*F));
     add(f.tangential(*F));
   }
-  for (const Vec3* M : {&f.momentTotal, &f.momentPressure, &f.momentDeviatoric}) {
+  for (const Vec3* M : {&f.momentTotal, &f.momentPressure, &f.momentDeviatoric, &f.momentFriction}) {
     for (int d = dimension_ == 2 ? 2 : 0; d < 3; ++d) add((*M)[d]);
   }
   r += fmt::format("\t{}", f.nWall);

@@ -5,8 +5,8 @@
 // line naming every column with its unit, then one tab-separated row per time.
 //
 // Columns in 2D (3D adds the z components and the x, y moments):
-//   Time  Fx Fy Fn Ft  Fpx Fpy Fpn Fpt  Fdx Fdy Fdn Fdt  Mz Mpz Mdz  nWall
-// F: total force, Fp: pressure part, Fd: deviatoric part; n/t: normal and tangential
+//   Time  Fx Fy Fn Ft  Fpx Fpy Fpn Fpt  Fdx Fdy Fdn Fdt  Ffx Ffy Ffn Fft  Mz Mpz Mdz Mfz  nWall
+// F: total force, Fp: pressure part, Fd: deviatoric part, Ff: friction part; n/t: normal and tangential
 // components (PatchForces.hpp); M: moment about CofR; nWall: wall particles summed.
 // Units: N and N m when the set has a width, else N/m and N m/m (per metre of width).
 #include <string>

@@ -36,6 +36,10 @@ PatchForces patchForces(const PatchForceInput& in) {
     fatalError(fmt::format("patchForces: {} values of the wall stress for {} particles", in.wallTau->size(),
                            cloud.size()));
   }
+  if (in.wallFriction && in.wallFriction->size() != cloud.size()) {
+    fatalError(fmt::format("patchForces: {} values of the wall friction for {} particles", in.wallFriction->size(),
+                           cloud.size()));
+  }
 
   std::vector<char> inSet(props.patches.size(), 0);
   for (const label p : in.patches) inSet[static_cast<std::size_t>(p)] = 1;
@@ -52,16 +56,20 @@ PatchForces patchForces(const PatchForceInput& in) {
     const Vec3& n = cloud.normal[w];
     const Vec3 arm = cloud.positions[w] - in.CofR;
     const Vec3 fp = -cloud.p[w] * area * n;
-    const Vec3 fd = in.wallTau ? Vec3(area * dotSymm((*in.wallTau)[w], n)) : Vec3::Zero();
+    // A sliding material (wallFriction given): pressure and friction only (see the header).
+    const Vec3 fd = in.wallTau && !in.wallFriction ? Vec3(area * dotSymm((*in.wallTau)[w], n)) : Vec3::Zero();
+    const Vec3 ff = in.wallFriction ? Vec3(area * (*in.wallFriction)[w]) : Vec3::Zero();
     out.pressure += fp;
     out.deviatoric += fd;
+    out.friction += ff;
     out.momentPressure += arm.cross(fp);
     out.momentDeviatoric += arm.cross(fd);
+    out.momentFriction += arm.cross(ff);
     normalSum += n;
     ++out.nWall;
   }
-  out.total = out.pressure + out.deviatoric;
-  out.momentTotal = out.momentPressure + out.momentDeviatoric;
+  out.total = out.pressure + out.deviatoric + out.friction;
+  out.momentTotal = out.momentPressure + out.momentDeviatoric + out.momentFriction;
   // Normals that cancel (two facing walls) leave no meaningful direction: keep n̄ = 0.
   if (normalSum.norm() > 1e-6 * static_cast<double>(out.nWall)) {
     out.meanNormal = normalSum.normalized();

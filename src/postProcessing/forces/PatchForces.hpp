@@ -4,8 +4,23 @@
 //
 //   pressure part    F_p = Σ_w  p_w A_w (−n_w)
 //   deviatoric part  F_d = Σ_w  A_w τ_w·n_w
-//   total            F   = F_p + F_d          (= Σ_w A_w σ_w·n_w, σ = −p I + τ)
+//   friction part    F_f = Σ_w  A_w t_w
+//   total            F   = F_p + F_d + F_f
 //   moment           M   = Σ_w (x_w − CofR) × f_w   (each part and the total)
+//
+// The friction part is for a material that slides on the walls (WallContact::coulombFriction).
+// The solver's walls act on such a material by two forces only: the pressure of the wall
+// particles (what stops it entering the wall, so p_w carries the whole normal traction) and
+// the Coulomb friction (WallFriction); its viscous term leaves the walls out. t_w is the
+// traction that friction puts on wall particle w (the field `wallFriction` the solver writes,
+// WallFriction::wallTraction). With it given, F = F_p + F_f, and F_d = 0: the material's
+// stress next to the wall, τ_w·n_w, is not a force the solver applies there, and adding it
+// would break the momentum balance (a block on a 30° bed: F_p = m g cos θ within 1.4 %,
+// F_p + A τ·n 87 % above it). On a free-slip patch t_w = 0: such a wall takes no shear.
+// Without it (a fluid, which sticks and is sheared by the wall) F_f = 0 and F_d is τ_w·n_w.
+// A scene that mixes a sliding and a sticking material on one patch would need the choice
+// per wall particle; the field exists only where some material slides, and then holds for
+// every wall particle.
 //
 // Conventions:
 //  - n_w is the wall particle's unit normal, pointing out of the solid into the material
@@ -36,9 +51,11 @@ namespace isph {
 struct PatchForces {
   Vec3 pressure = Vec3::Zero();
   Vec3 deviatoric = Vec3::Zero();
+  Vec3 friction = Vec3::Zero();
   Vec3 total = Vec3::Zero();
   Vec3 momentPressure = Vec3::Zero();
   Vec3 momentDeviatoric = Vec3::Zero();
+  Vec3 momentFriction = Vec3::Zero();
   Vec3 momentTotal = Vec3::Zero();
   Vec3 meanNormal = Vec3::Zero();  // n̄ (unit; zero when the set has no wall particle or its
                                    // normals cancel, as two facing walls: then F_n = F_t = 0)
@@ -55,6 +72,9 @@ struct PatchForceInput {
   std::vector<label> patches;  // patch labels of the set (indices into cloud.properties.patches)
   // τ on the wall particles (wallDeviatoricStress), one per particle; null: no deviatoric part.
   const std::vector<SymmTensor>* wallTau = nullptr;
+  // The Coulomb friction traction t_w on the wall particles [Pa] (the solver's wallFriction),
+  // one per particle; given: the material slides (F_d = 0, see above); null: F_f = 0.
+  const std::vector<Vec3>* wallFriction = nullptr;
   Vec3 CofR = Vec3::Zero();
   double width = 1.0;  // out-of-plane width [m] in 2D (1: per metre); must be 1 in 3D
 };

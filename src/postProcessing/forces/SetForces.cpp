@@ -30,6 +30,7 @@ std::vector<PatchForces> setForces(const SetForcesInput& in) {
     out.push_back(patchForces({.cloud = cloud,
                                .patches = labels[s],
                                .wallTau = in.tau ? &wallTau : nullptr,
+                               .wallFriction = in.wallFriction,
                                .CofR = in.sets[s].CofR,
                                .width = cloud.properties.dimension == 2 ? in.sets[s].widthOrUnit() : 1.0}));
   }

@@ -2,7 +2,7 @@
 // The forces on every set of a dictionary at one time, as sampleForces and the solver's
 // forces function object compute them: patch names resolved against the cloud, the
 // deviatoric stress τ (when the cloud has one) carried to the sets' wall particles, then
-// patchForces per set.
+// patchForces per set (with the wall friction traction, when the material slides on walls).
 #include <vector>
 
 #include "postProcessing/forces/ForceSet.hpp"
@@ -20,6 +20,8 @@ struct SetForcesInput {
   // The caller's neighbour list over cloud.positions, if it has one (the solver); else one
   // is built here when tau is given.
   const NeighbourList* neighbours = nullptr;
+  // The solver's Coulomb friction traction on the wall particles (field wallFriction), or null.
+  const std::vector<Vec3>* wallFriction = nullptr;
 };
 
 std::vector<PatchForces> setForces(const SetForcesInput& in);

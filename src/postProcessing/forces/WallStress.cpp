@@ -20,6 +20,13 @@ std::optional<std::vector<SymmTensor>> readDeviatoricStress(const std::filesyste
   return readField<SymmTensor>(file, n);
 }
 
+std::optional<std::vector<Vec3>> readWallFriction(const std::filesystem::path& timeDir, const std::string& cloudName,
+                                                  std::size_t n) {
+  const auto file = timeDir / "lagrangian" / cloudName / "wallFriction";
+  if (!std::filesystem::is_regular_file(file)) return std::nullopt;
+  return readField<Vec3>(file, n);
+}
+
 std::vector<SymmTensor> wallDeviatoricStress(const ParticleCloud& cloud, const std::vector<SymmTensor>& tau,
                                              const NeighbourList& neighbours, const std::vector<char>* selected) {
   const std::size_t n = cloud.size();

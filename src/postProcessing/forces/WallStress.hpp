@@ -28,6 +28,11 @@ std::vector<SymmTensor> wallDeviatoricStress(const ParticleCloud& cloud, const s
 std::optional<std::vector<SymmTensor>> readDeviatoricStress(const std::filesystem::path& timeDir,
                                                             const std::string& cloudName, std::size_t n);
 
+// The Coulomb wall friction traction `wallFriction` (vectorField, Pa) of cloud `cloudName` in
+// `timeDir`, if the solver wrote one (some material slides on a friction wall); empty otherwise.
+std::optional<std::vector<Vec3>> readWallFriction(const std::filesystem::path& timeDir, const std::string& cloudName,
+                                                  std::size_t n);
+
 // τ·n for a symmetric tensor in OpenFOAM's component order (xx xy xz yy yz zz).
 Vec3 dotSymm(const SymmTensor& t, const Vec3& n);
 

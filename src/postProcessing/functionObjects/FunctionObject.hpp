@@ -35,6 +35,7 @@ struct SolverState {
   const std::vector<SymmTensor>* tau = nullptr;  // per particle; null: none
   const Kernel* kernel = nullptr;
   const NeighbourList* neighbours = nullptr;     // over cloud.positions, if the solver has one
+  const std::vector<Vec3>* wallFriction = nullptr;  // the Coulomb friction traction on the walls; null: none
 };
 
 class FunctionObject {

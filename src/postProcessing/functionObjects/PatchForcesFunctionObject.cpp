@@ -19,7 +19,8 @@ void PatchForcesFunctionObject::execute(const Time& time, const SolverState& sta
                                  .sets = set_,
                                  .tau = state.tau,
                                  .kernel = state.kernel,
-                                 .neighbours = state.neighbours});
+                                 .neighbours = state.neighbours,
+                                 .wallFriction = state.wallFriction});
   std::string text;
   if (!table_) {
     table_.emplace(set_[0], state.cloud.properties.dimension);

@@ -21,10 +21,12 @@ PatchForces sampleForces() {
   PatchForces f;
   f.pressure = Vec3(-100, 2, 0);
   f.deviatoric = Vec3(-1, 3, 0);
-  f.total = f.pressure + f.deviatoric;
+  f.friction = Vec3(0, 4, 0);
+  f.total = f.pressure + f.deviatoric + f.friction;
   f.momentPressure = Vec3(0, 0, 7);
   f.momentDeviatoric = Vec3(0, 0, -2);
-  f.momentTotal = Vec3(0, 0, 5);
+  f.momentFriction = Vec3(0, 0, 1);
+  f.momentTotal = Vec3(0, 0, 6);
   f.meanNormal = Vec3(1, 0, 0);
   f.tangent = Vec3(0, -1, 0);
   f.nWall = 42;
@@ -43,18 +45,20 @@ TEST(ForceTable, HeaderNamesEveryColumnWithItsUnit) {
   const std::string h = perMetre.header(sampleForces());
   EXPECT_EQ(lastLine(h),
             "# Time [s]\tFx [N/m]\tFy [N/m]\tFn [N/m]\tFt [N/m]\tFpx [N/m]\tFpy [N/m]\tFpn [N/m]\tFpt [N/m]"
-            "\tFdx [N/m]\tFdy [N/m]\tFdn [N/m]\tFdt [N/m]\tMz [N m/m]\tMpz [N m/m]\tMdz [N m/m]\tnWall [-]");
+            "\tFdx [N/m]\tFdy [N/m]\tFdn [N/m]\tFdt [N/m]\tFfx [N/m]\tFfy [N/m]\tFfn [N/m]\tFft [N/m]"
+            "\tMz [N m/m]\tMpz [N m/m]\tMdz [N m/m]\tMfz [N m/m]\tnWall [-]");
   EXPECT_NE(h.find("per metre of width"), std::string::npos);
   EXPECT_EQ(perMetre.column("Time"), 1);
   EXPECT_EQ(perMetre.column("Fn"), 4);
-  EXPECT_EQ(perMetre.column("Mz"), 14);
+  EXPECT_EQ(perMetre.column("Fft"), 17);
+  EXPECT_EQ(perMetre.column("Mz"), 18);
 
   const ForceTable wide(setFrom("wall { patches (left); width 0.3; }"), 2);
   EXPECT_NE(wide.header(sampleForces()).find("Fx [N]\t"), std::string::npos);
   EXPECT_NE(wide.header(sampleForces()).find("Mz [N m]\t"), std::string::npos);
 
   const ForceTable table3d(setFrom("wall { patches (left); }"), 3);
-  EXPECT_EQ(table3d.columns().size(), 1u + 3 * 5 + 3 * 3 + 1);
+  EXPECT_EQ(table3d.columns().size(), 1u + 4 * 5 + 4 * 3 + 1);
   EXPECT_EQ(table3d.columns()[1].unit, "N");
 }
 
@@ -63,7 +67,7 @@ TEST(ForceTable, RowHoldsTheForcesInColumnOrder) {
   std::istringstream row(t.row(0.25, sampleForces()));
   std::vector<double> v;
   for (double x; row >> x;) v.push_back(x);
-  const std::vector<double> expected{0.25, -101, 5, 101, -5, -100, 2, 100, -2, -1, 3, 1, -3, 5, 7, -2, 42};
+  const std::vector<double> expected{0.25, -101, 9, 101, -9, -100, 2, 100, -2, -1, 3, 1, -3, 0, 4, 0, -4, 6, 7, -2, 1, 42};
   ASSERT_EQ(v.size(), expected.size());
   for (std::size_t k = 0; k < v.size(); ++k) EXPECT_DOUBLE_EQ(v[k], expected[k]) << "column " << k + 1;
 }

@@ -65,6 +65,35 @@ TEST(PatchForces, DeviatoricStressIsTheTractionOnTheWall) {
   EXPECT_NEAR(f.normal(f.total), 1.2, tol);
 }
 
+TEST(PatchForces, ASlidingMaterialActsByPressureAndFrictionOnly) {
+  // The same bed and τ, with a friction traction t = (7, 0) Pa on each wall particle (a
+  // material that slides, dragging the bed along +x): F_f = 4 × 0.1 × 7 = 2.8 N/m along +x,
+  // F_d = 0 (the solver's walls do not act on a sliding material through τ), p = 20 Pa.
+  ParticleCloud c = pptest::flatBed(4, 0.1, 20.0);
+  std::vector<SymmTensor> tau(c.size(), SymmTensor::Zero());
+  std::vector<Vec3> friction(c.size(), Vec3::Zero());
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c.kind[i] != static_cast<label>(ParticleKind::wall)) continue;
+    tau[i] << 0, 5, 0, -3, 0, 0;
+    friction[i] = Vec3(7, 0, 0);
+  }
+  const PatchForces f = patchForces({.cloud = c, .patches = {0}, .wallTau = &tau, .wallFriction = &friction});
+  EXPECT_EQ(f.deviatoric, Vec3::Zero());
+  EXPECT_NEAR(f.friction.x(), 2.8, tol);
+  EXPECT_NEAR(f.normal(f.friction), 0.0, tol);
+  EXPECT_NEAR(f.tangential(f.total), 2.8, tol);
+  EXPECT_NEAR(f.normal(f.total), 4 * 0.1 * 20.0, tol);
+  // Moment of the friction about the origin: the traction acts at y = 0, so none about z;
+  // about CofR (0, 1): arm (x, −1) × (0.7, 0) = +0.7 per particle.
+  EXPECT_NEAR(f.momentFriction.z(), 0.0, tol);
+  const PatchForces g = patchForces({.cloud = c, .patches = {0}, .wallFriction = &friction, .CofR = Vec3(0, 1, 0)});
+  EXPECT_NEAR(g.momentFriction.z(), 4 * 0.7, tol);
+  EXPECT_NEAR(g.momentTotal.z(), g.momentPressure.z() + 4 * 0.7, tol);
+
+  std::vector<Vec3> wrongSize(3);
+  EXPECT_THROW(patchForces({.cloud = c, .patches = {0}, .wallFriction = &wrongSize}), FatalError);
+}
+
 TEST(PatchForces, VerticalWallSplitsIntoNormalAndTangential) {
   // A wall at x = 0 with material on its +x side (n = +x), p = 50 Pa on 5 particles dx = 0.2
   // and a shear τ_xy = 2: F_p = (−50, 0), F_d = A Σ (τ_xx, τ_xy) = (0, 2). t̂ = n̄ × ẑ = −y.

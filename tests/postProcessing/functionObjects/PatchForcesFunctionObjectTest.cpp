@@ -65,7 +65,7 @@ TEST_F(FunctionObjects, PatchForcesWritesEveryNStepsPerMetreOrOverTheWidth) {
   const auto wide = rows(wideFile);
   ASSERT_EQ(perMetre.size(), 4u) << "writeInterval 1: every step";
   ASSERT_EQ(wide.size(), 2u) << "writeInterval 2: steps 2 and 4";
-  const int Fn = 3, Fy = 2, nWall = 16;  // 0-based columns of the 2D table (ForceTable.hpp)
+  const int Fn = 3, Fy = 2, nWall = 21;  // 0-based columns of the 2D table (ForceTable.hpp)
   EXPECT_NEAR(perMetre[0][0], 0.1, 1e-12);
   EXPECT_NEAR(wide[0][0], 0.2, 1e-12);
   EXPECT_NEAR(wide[1][0], 0.4, 1e-12);
