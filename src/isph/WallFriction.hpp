@@ -59,8 +59,8 @@ class WallFriction {
   void applyExplicit(const ParticleSystem& ps, double dt, std::vector<Vec3>& u,
                      std::vector<Vec3>* applied = nullptr) const;
 
-  // The traction the material exerts on each wall particle through the friction [Pa; N/m² in
-  // 3D, N/m per metre of width in 2D after × A_w]: the reaction to the forces f_a of the walls
+  // The traction the material exerts on each wall particle through the friction [Pa: force
+  // per A_w = dx^(d−1), the force per metre of width in 2D]: the reaction to the forces f_a of the walls
   // on the material (`onMaterial`, per material particle, from the step just taken), each
   // shared among a's friction-wall neighbours w in proportion to W_aw, as its capacity was
   // gathered:  t_w = −Σ_a f_a W_aw / (A_w Σ_w' W_aw').  So Σ_w A_w t_w = −Σ_a f_a exactly

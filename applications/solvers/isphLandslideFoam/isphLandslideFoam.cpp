@@ -61,10 +61,12 @@ void run(const isph::ArgList& args) {
     // The state as written now: the deviatoric stress after the step, the neighbours found
     // afresh over the moved particles (as sampleForces does on the written time).
     // (Only when one is due: the stress is a second strain-rate pass, not to be paid every step.)
+    // (A material that slides on the walls exchanges no τ with them: its wall force is pressure
+    // plus friction, PatchForces.hpp, and τ is not computed for it.)
     if (functions.anyDue(time)) {
-      functions.execute(time, {.cloud = solver.particles().cloud, .tau = solver.deviatoricStress(),
-                               .kernel = &solver.kernel(), .neighbours = nullptr,
-                               .wallFriction = solver.wallFriction()});
+      const auto* friction = solver.wallFriction();
+      functions.execute(time, {.cloud = solver.particles().cloud, .tau = friction ? nullptr : solver.deviatoricStress(),
+                               .kernel = &solver.kernel(), .neighbours = nullptr, .wallFriction = friction});
     }
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);

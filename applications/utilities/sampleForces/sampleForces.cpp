@@ -50,9 +50,11 @@ void run(const isph::ArgList& args) {
     isph::info("Time = {}", time.name);
     const fs::path timeDir = args.casePath() / time.name;
     const isph::ParticleCloud cloud = isph::readCloud(timeDir, cloudName);
-    const auto tau = isph::readDeviatoricStress(timeDir, cloudName, cloud.size());
-    if (tau && !kernel) kernel = kernelFor(args.casePath(), cloud.properties);
+    // A material that slides on the walls (the solver wrote its wall friction) exchanges no τ
+    // with them (PatchForces.hpp): τ is read only for one that does not.
     const auto friction = isph::readWallFriction(timeDir, cloudName, cloud.size());
+    const auto tau = friction ? std::nullopt : isph::readDeviatoricStress(timeDir, cloudName, cloud.size());
+    if (tau && !kernel) kernel = kernelFor(args.casePath(), cloud.properties);
     const auto forces = isph::setForces({.cloud = cloud,
                                          .sets = sets,
                                          .tau = tau ? &*tau : nullptr,
