@@ -75,8 +75,8 @@ TankResult runTank(const pptest::TempDir& dir, double dx) {
   EXPECT_EQ(rc2, 0) << pptest::readText(dir / "log.sampleForces");
   const auto leftRow = lastRow(pptest::readText(caseDir / "postProcessing/sampleForces/0/leftWall.dat"));
   const auto sideRow = lastRow(pptest::readText(caseDir / "postProcessing/sampleForces/0/sideWalls.dat"));
-  EXPECT_EQ(leftRow.size(), 17u);
-  EXPECT_EQ(sideRow.size(), 17u);
+  EXPECT_EQ(leftRow.size(), 22u);  // the 2D columns of ForceTable.hpp
+  EXPECT_EQ(sideRow.size(), 22u);
   if (leftRow.size() > 3) r.utilityForce = leftRow[3];      // Fn
   if (sideRow.size() > 1) r.utilitySideWalls = sideRow[1];  // Fx
   return r;
