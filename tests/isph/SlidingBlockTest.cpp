@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "CaseRunner.hpp"
@@ -28,15 +27,9 @@ using isph::test::CaseRunner;
 using namespace isph;
 namespace fs = std::filesystem;
 
-// The bed's force history from the solver (function object bedForce) and sampleForces.
-void addBedForces(CaseRunner& c) {
-  c.set("system/controlDict", "writeFormat", "binary");  // exact doubles for sampleForces
-  std::ofstream(c.path() / "system/controlDict", std::ios::app)
-      << "\nfunctions\n{\n    bedForce\n    {\n        type patchForces;\n        patches (bed);\n    }\n}\n";
-  std::ofstream(c.path() / "system/sampleForcesDict")
-      << "FoamFile { version 2.0; format ascii; class dictionary; object sampleForcesDict; }\n"
-         "bed { patches (bed); }\n";
-}
+// The case's bed force (function object bedForce, system/sampleForcesDict) on exact doubles:
+// sampleForces on binary fields computes what the solver did.
+void addBedForces(CaseRunner& c) { c.set("system/controlDict", "writeFormat", "binary"); }
 
 // Rows (time, columns after it) of a force table, for t in [from, to].
 std::vector<std::vector<double>> forceRows(const fs::path& file, double from, double to) {
