@@ -12,6 +12,9 @@
 #    Coulomb friction counted (without it, 0.76). Normal to the bed the walls take 1.55 × the
 #    weight (their pressures exceed what the deposit's weight needs; README): reported, not
 #    asserted.
+#  - the wall force routine against the exact load: over the same 0.25 s, the walls' force
+#    along the bed within 10 % of the function object loadCell's (F = M g − dP/dt from the
+#    sand's momentum alone; 1.040 measured). Normal to the bed 1.519: reported, not asserted.
 # usage: testBarrier.sh <project dir> <build dir>
 . "${0%/*}/TutorialTest.sh"
 runTutorial "$1" "$2" landslides/barrier
@@ -27,4 +30,7 @@ along=$(value wallsForceAlongBed)
 weight=$(value sandWeightAlongBed)
 check "walls along the bed $along N within 10 % of the sand's along-bed weight $weight N" \
     "$along >= 0.9 * $weight && $along <= 1.1 * $weight"
+load=$(value loadCellAlongBed)
+check "walls along the bed $along N within 10 % of the load cell's $load N (F = M g - dP/dt)" \
+    "$along >= 0.9 * $load && $along <= 1.1 * $load"
 exit $fail

@@ -66,7 +66,8 @@ void run(const isph::ArgList& args) {
     if (functions.anyDue(time)) {
       const auto* friction = solver.wallFriction();
       functions.execute(time, {.cloud = solver.particles().cloud, .tau = friction ? nullptr : solver.deviatoricStress(),
-                               .kernel = &solver.kernel(), .neighbours = nullptr, .wallFriction = friction});
+                               .kernel = &solver.kernel(), .neighbours = nullptr, .wallFriction = friction,
+                               .gravity = &solver.gravity()});
     }
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);

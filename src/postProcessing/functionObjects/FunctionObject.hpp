@@ -36,6 +36,7 @@ struct SolverState {
   const Kernel* kernel = nullptr;
   const NeighbourList* neighbours = nullptr;     // over cloud.positions, if the solver has one
   const std::vector<Vec3>* wallFriction = nullptr;  // the Coulomb friction traction on the walls; null: none
+  const Vec3* gravity = nullptr;                    // the solver's g [m/s²] (momentumBalance); null: none
 };
 
 class FunctionObject {

@@ -6,9 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
-#include "../PostProcessingTestHelpers.hpp"
+#include "FunctionObjectTestHelpers.hpp"
 #include "core/time/Time.hpp"
 #include "postProcessing/functionObjects/FunctionObjectList.hpp"
 
@@ -17,23 +15,8 @@ namespace {
 
 using pptest::TempDir;
 
-// The data rows of a force.dat file, as numbers.
-std::vector<std::vector<double>> rows(const std::filesystem::path& file) {
-  std::vector<std::vector<double>> out;
-  std::istringstream in(pptest::readText(file));
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream row(line);
-    out.emplace_back();
-    for (double v; row >> v;) out.back().push_back(v);
-  }
-  return out;
-}
-
-Dictionary functionsDict(const std::string& text) {
-  return Dictionary::parse("functions {\n" + text + "\n}\n", "system/controlDict").subDict("functions");
-}
+using pptest::functionsDict;
+const auto rows = pptest::dataRows;
 
 class FunctionObjects : public ::testing::Test {
  protected:
