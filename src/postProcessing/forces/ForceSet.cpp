@@ -26,6 +26,13 @@ ForceSet readForceSet(const std::string& name, const Dictionary& dict) {
                  fmt::format("keyword 'width' of set '{}' is {}; expected a positive width in metres", name,
                              *set.width));
   }
+  set.facing = dict.getOptional<Vec3>("facing");
+  if (set.facing && !(set.facing->norm() > 0)) {
+    fatalIOError(dict.entry("facing").location(),
+                 fmt::format("keyword 'facing' of set '{}' is the zero vector; expected a direction, the outward "
+                             "normal of the faces to sum, e.g. (-1 0 0) for a barrier's upstream face",
+                             name));
+  }
   set.reference = dict.getOptional<std::string>("reference");
   if (const auto cols = dict.getOptional<std::vector<int>>("referenceColumns")) {
     if (cols->size() != 2 || (*cols)[0] < 1 || (*cols)[1] < 1) {

@@ -8,6 +8,8 @@
 //       patches     (barrier);     // names from the cloud's cloudProperties
 //       CofR        (0 0 0);       // optional, default (0 0 0)
 //       width       0.3;           // optional (2D): force over this width; default per metre
+//       facing      (-1 0 0);      // optional: only the wall particles whose normal lies within
+//                                  // 60° of this direction (one face of a structure)
 //       reference   "validation/barrierForce.csv";   // optional, relative to the case
 //       referenceColumns (1 2);    // optional: the CSV's time and force columns (1-based)
 //   }
@@ -30,6 +32,7 @@ struct ForceSet {
   std::vector<std::string> patchNames;
   Vec3 CofR = Vec3::Zero();
   std::optional<double> width;             // [m]; empty: per metre of width
+  std::optional<Vec3> facing;              // only the faces whose normal is within 60° of it
   std::optional<std::string> reference;    // CSV file, relative to the case
   std::array<int, 2> referenceColumns{1, 2};
   SourceLocation where;                    // the set's dictionary

@@ -39,8 +39,10 @@ int ForceTable::column(const std::string& name) const {
 }
 
 std::string ForceTable::header(const PatchForces& first) const {
-  std::string h = fmt::format("# Forces of the material on set '{}': patches ({}), CofR {}", set_.name,
-                              fmt::join(set_.patchNames, " "), vec(set_.CofR));
+  std::string h = fmt::format("# Forces of the material on set '{}': patches ({}){}, CofR {}", set_.name,
+                              fmt::join(set_.patchNames, " "),
+                              set_.facing ? fmt::format(" (the faces facing {})", vec(*set_.facing)) : std::string(),
+                              vec(set_.CofR));
   if (dimension_ == 2) {
     h += set_.width ? fmt::format(", width {} m (forces over the width)\n", *set_.width)
                     : ", per metre of width\n";

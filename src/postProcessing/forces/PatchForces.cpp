@@ -48,12 +48,16 @@ PatchForces patchForces(const PatchForceInput& in) {
   const double area = props.dimension == 2 ? dx * in.width : dx * dx;
   const auto wall = static_cast<label>(ParticleKind::wall);
 
+  const double facingNorm = in.facing.norm();
+  const Vec3 facing = facingNorm > 0 ? Vec3(in.facing / facingNorm) : Vec3::Zero();
+
   PatchForces out;
   out.dimension = props.dimension;
   Vec3 normalSum = Vec3::Zero();
   for (std::size_t w = 0; w < cloud.size(); ++w) {
     if (cloud.kind[w] != wall || cloud.patch[w] < 0 || !inSet[static_cast<std::size_t>(cloud.patch[w])]) continue;
     const Vec3& n = cloud.normal[w];
+    if (facingNorm > 0 && !(n.dot(facing) > 0.5)) continue;
     const Vec3 arm = cloud.positions[w] - in.CofR;
     const Vec3 fp = -cloud.p[w] * area * n;
     // A sliding material (wallFriction given): pressure and friction only (see the header).

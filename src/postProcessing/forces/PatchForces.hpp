@@ -77,9 +77,12 @@ struct PatchForceInput {
   const std::vector<Vec3>* wallFriction = nullptr;
   Vec3 CofR = Vec3::Zero();
   double width = 1.0;  // out-of-plane width [m] in 2D (1: per metre); must be 1 in 3D
+  // Only the wall particles whose normal n_w lies within 60° of this direction (n_w·f̂ > ½):
+  // one face of a structure, e.g. a barrier's upstream face (ForceSet `facing`); zero: all.
+  Vec3 facing = Vec3::Zero();
 };
 
-// Sums over the wall particles of `in.patches`. FatalError for a patch label out of range, a
+// Sums over the wall particles of `in.patches` (those facing `in.facing`, if given). FatalError for a patch label out of range, a
 // non-positive spacing or width, or a width other than 1 in 3D.
 PatchForces patchForces(const PatchForceInput& in);
 

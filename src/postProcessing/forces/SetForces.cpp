@@ -32,7 +32,8 @@ std::vector<PatchForces> setForces(const SetForcesInput& in) {
                                .wallTau = in.tau ? &wallTau : nullptr,
                                .wallFriction = in.wallFriction,
                                .CofR = in.sets[s].CofR,
-                               .width = cloud.properties.dimension == 2 ? in.sets[s].widthOrUnit() : 1.0}));
+                               .width = cloud.properties.dimension == 2 ? in.sets[s].widthOrUnit() : 1.0,
+                               .facing = in.sets[s].facing.value_or(Vec3::Zero())}));
   }
   return out;
 }

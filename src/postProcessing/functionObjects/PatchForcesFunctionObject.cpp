@@ -36,8 +36,11 @@ void PatchForcesFunctionObject::execute(const Time& time, const SolverState& sta
 
 std::string PatchForcesFunctionObject::describe() const {
   const ForceSet& s = set_[0];
-  return fmt::format("{}: patchForces on ({}), CofR ({} {} {}), {}, every {} step(s) -> {}", name(),
-                     fmt::join(s.patchNames, " "), s.CofR.x(), s.CofR.y(), s.CofR.z(),
+  return fmt::format("{}: patchForces on ({}){}, CofR ({} {} {}), {}, every {} step(s) -> {}", name(),
+                     fmt::join(s.patchNames, " "),
+                     s.facing ? fmt::format(" facing ({} {} {})", s.facing->x(), s.facing->y(), s.facing->z())
+                              : std::string(),
+                     s.CofR.x(), s.CofR.y(), s.CofR.z(),
                      s.width ? fmt::format("over a width of {} m (2D)", *s.width) : "per metre of width (2D)",
                      writeInterval(), file_.string());
 }

@@ -23,10 +23,13 @@ TEST(ForceSet, ReadsEverySetWithItsDefaults) {
   const Dictionary d = Dictionary::parse(
       "cloud particles;\n"
       "barrier { patches (barrier); CofR (2.3 0 0); width 0.3; reference \"data/f.csv\"; referenceColumns (1 3); }\n"
-      "walls { patches (left right); }\n",
+      "walls { patches (left right); }\n"
+      "face { patches (barrier); facing (-2 0 0); }\n",
       "system/sampleForcesDict");
   const auto sets = readForceSets(d, {"cloud"});
-  ASSERT_EQ(sets.size(), 2u);
+  ASSERT_EQ(sets.size(), 3u);
+  EXPECT_FALSE(sets[0].facing.has_value());
+  EXPECT_EQ(sets[2].facing.value_or(Vec3::Zero()), Vec3(-2, 0, 0));
   EXPECT_EQ(sets[0].name, "barrier");
   EXPECT_EQ(sets[0].patchNames, std::vector<std::string>{"barrier"});
   EXPECT_EQ(sets[0].CofR, Vec3(2.3, 0, 0));
@@ -47,6 +50,10 @@ TEST(ForceSet, ErrorsNameTheFileLineAndKeyword) {
   const std::string width = errorOf("barrier\n{\n    patches (barrier);\n    width -1;\n}\n");
   EXPECT_NE(width.find("'width'"), std::string::npos) << width;
   EXPECT_NE(width.find("line 4"), std::string::npos) << width;
+
+  const std::string facing = errorOf("barrier\n{\n    patches (barrier);\n    facing (0 0 0);\n}\n");
+  EXPECT_NE(facing.find("'facing'"), std::string::npos) << facing;
+  EXPECT_NE(facing.find("line 4"), std::string::npos) << facing;
 
   const std::string none = errorOf("cloud particles;\n");
   EXPECT_NE(none.find("names no set"), std::string::npos) << none;

@@ -94,6 +94,39 @@ TEST(PatchForces, ASlidingMaterialActsByPressureAndFrictionOnly) {
   EXPECT_THROW(patchForces({.cloud = c, .patches = {0}, .wallFriction = &wrongSize}), FatalError);
 }
 
+// A barrier two spacings thick (as the barrier tutorial's at its test spacing): its upstream
+// face (n = −x) at 300 Pa and its back face (n = +x) at 120 Pa, 5 particles each, dx = 0.1,
+// its top (n = +y) at 50 Pa on 2. The whole patch nets (300 − 120) × 0.5 = 90 N/m along +x;
+// `facing (-1 0 0)` takes the upstream face alone, 150 N/m, and `facing (1 1 0)` (45° off
+// both the back face and the top, inside 60°) those two.
+TEST(PatchForces, FacingSelectsOneFaceOfAStructure) {
+  ParticleCloud c;
+  c.properties.materials = {"sand"};
+  c.properties.patches = {{"barrier", 0.0}};
+  c.properties.spacing = 0.1;
+  for (int i = 0; i < 5; ++i) {
+    const double y = (i + 0.5) * 0.1;
+    c.push_back(Vec3(2.3, y, 0), i, Vec3::Zero(), 300.0, -1, ParticleKind::wall, 0, Vec3(-1, 0, 0), 0);
+    c.push_back(Vec3(2.5, y, 0), 10 + i, Vec3::Zero(), 120.0, -1, ParticleKind::wall, 0, Vec3(1, 0, 0), 0);
+  }
+  for (int i = 0; i < 2; ++i) {
+    c.push_back(Vec3(2.35 + 0.1 * i, 0.5, 0), 20 + i, Vec3::Zero(), 50.0, -1, ParticleKind::wall, 0, Vec3(0, 1, 0), 0);
+  }
+  const PatchForces all = patchForces({.cloud = c, .patches = {0}});
+  EXPECT_EQ(all.nWall, 12);
+  EXPECT_NEAR(all.pressure.x(), 90.0, 1e-10);
+  EXPECT_NEAR(all.pressure.y(), -10.0, 1e-10);
+  const PatchForces upstream = patchForces({.cloud = c, .patches = {0}, .facing = Vec3(-1, 0, 0)});
+  EXPECT_EQ(upstream.nWall, 5);
+  EXPECT_NEAR(upstream.pressure.x(), 150.0, 1e-10);
+  EXPECT_NEAR(upstream.pressure.y(), 0.0, 1e-10);
+  EXPECT_NEAR(upstream.normal(upstream.total), 150.0, 1e-10) << "the face's own normal";
+  const PatchForces lee = patchForces({.cloud = c, .patches = {0}, .facing = Vec3(1, 1, 0)});
+  EXPECT_EQ(lee.nWall, 7);
+  EXPECT_NEAR(lee.pressure.x(), -60.0, 1e-10);
+  EXPECT_NEAR(lee.pressure.y(), -10.0, 1e-10);
+}
+
 TEST(PatchForces, VerticalWallSplitsIntoNormalAndTangential) {
   // A wall at x = 0 with material on its +x side (n = +x), p = 50 Pa on 5 particles dx = 0.2
   // and a shear τ_xy = 2: F_p = (−50, 0), F_d = A Σ (τ_xx, τ_xy) = (0, 2). t̂ = n̄ × ẑ = −y.
