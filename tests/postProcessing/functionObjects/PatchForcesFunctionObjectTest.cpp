@@ -68,6 +68,29 @@ TEST_F(FunctionObjects, PatchForcesWritesEveryNStepsPerMetreOrOverTheWidth) {
   EXPECT_NE(wideHeader.find("Mz [N m]"), std::string::npos);
 }
 
+// `facing`: the bed's wall particles face +y, so facing (0 1 0) keeps all ten and says so in
+// the header, and facing (1 0 0) none of them.
+TEST_F(FunctionObjects, FacingKeepsTheFacesThatLookThatWay) {
+  Time time(dir.path());
+  FunctionObjectList functions(functionsDict("up { type patchForces; patches (bed); facing (0 1 0); }\n"
+                                             "side { type patchForces; patches (bed); facing (1 0 0); }"),
+                               time);
+  const ParticleCloud cloud = pptest::flatBed(10, 0.1, 1000.0);
+  ++time;
+  functions.execute(time, {.cloud = cloud});
+  const auto up = rows(dir / "postProcessing/up/0/force.dat");
+  const auto side = rows(dir / "postProcessing/side/0/force.dat");
+  const int Fy = 2, nWall = 21;
+  ASSERT_EQ(up.size(), 1u);
+  ASSERT_EQ(side.size(), 1u);
+  EXPECT_NEAR(up[0][Fy], -1000.0, 1e-9 * 1000);
+  EXPECT_EQ(up[0][nWall], 10);
+  EXPECT_EQ(side[0][nWall], 0);
+  EXPECT_EQ(side[0][Fy], 0.0);
+  const std::string header = pptest::readText(dir / "postProcessing/up/0/force.dat");
+  EXPECT_NE(header.find("patches (bed) (the faces facing (0 1 0))"), std::string::npos) << header;
+}
+
 TEST_F(FunctionObjects, NoFunctionsIsAnEmptyList) {
   Time time(dir.path());
   EXPECT_EQ(FunctionObjectList(time).size(), 0u);
