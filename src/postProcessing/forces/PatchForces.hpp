@@ -82,8 +82,9 @@ struct PatchForceInput {
   Vec3 facing = Vec3::Zero();
 };
 
-// Sums over the wall particles of `in.patches` (those facing `in.facing`, if given). FatalError for a patch label out of range, a
-// non-positive spacing or width, or a width other than 1 in 3D.
+// Sums over the wall particles of `in.patches` (those facing `in.facing`, if given).
+// FatalError for a patch label out of range, a non-positive spacing or width, or a width
+// other than 1 in 3D.
 PatchForces patchForces(const PatchForceInput& in);
 
 }  // namespace isph
