@@ -19,7 +19,9 @@ MomentumBalanceFunctionObject::MomentumBalanceFunctionObject(const std::string& 
 }
 
 void MomentumBalanceFunctionObject::execute(const Time& time, const SolverState& state) {
-  if (!state.gravity) fatalError(fmt::format("function object '{}' (momentumBalance) needs the solver's gravity", name()));
+  if (!state.gravity) {
+    fatalError(fmt::format("function object '{}' (momentumBalance) needs the solver's gravity", name()));
+  }
   const ParticleCloud& c = state.cloud;
   const int dim = c.properties.dimension;
   if (width_ && dim != 2) {
