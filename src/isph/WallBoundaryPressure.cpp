@@ -14,7 +14,7 @@ void updateWallPressure(ParticleSystem& ps, const std::vector<Vec3>& ustar, cons
     for (long k = nl.start[b]; k < nl.start[b + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
       const auto a = static_cast<std::size_t>(nl.index[kk]);
-      if (!ps.isMaterial(a)) continue;
+      if (!ps.isMaterial(a) || !facesMaterial(ps, b, a)) continue;
       const double w = ps.volume[a] * nl.W[kk];
       sum += w * (c.p[a] + wallPressureIncrement(ps, ustar, g, a, b, dt));
       weight += w;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "isph/WallBoundaryPressure.hpp"
+
 namespace isph {
 
 WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity,
@@ -43,7 +45,7 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
     double sum = 0, rhoSum = 0;
     for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
       const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
-      if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])]) {
+      if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])] && facesMaterial(ps, w, b)) {
         sum += nl.W[static_cast<std::size_t>(k)];
         rhoSum += nl.W[static_cast<std::size_t>(k)] * ps.rho[b];
       }
@@ -66,7 +68,7 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
       const auto w = static_cast<std::size_t>(nl.index[kk]);
-      if (!ps.isWall(w) || tanDelta_[static_cast<std::size_t>(c.patch[w])] <= 0) continue;
+      if (!ps.isWall(w) || tanDelta_[static_cast<std::size_t>(c.patch[w])] <= 0 || !facesMaterial(ps, w, a)) continue;
       F += share[w] * nl.W[kk];
       normal += nl.W[kk] * c.normal[w];
       tanSum += nl.W[kk] * tanDelta_[static_cast<std::size_t>(c.patch[w])];
@@ -116,7 +118,8 @@ std::vector<Vec3> WallFriction::wallTraction(const ParticleSystem& ps, const std
     double sum = 0;
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
-      if (frictionWall(static_cast<std::size_t>(nl.index[kk]))) sum += nl.W[kk];
+      const auto w = static_cast<std::size_t>(nl.index[kk]);
+      if (frictionWall(w) && facesMaterial(ps, w, a)) sum += nl.W[kk];
     }
     if (sum > 0) share[a] = onMaterial[a] / sum;
   }
@@ -129,7 +132,7 @@ std::vector<Vec3> WallFriction::wallTraction(const ParticleSystem& ps, const std
     for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
       const auto a = static_cast<std::size_t>(nl.index[kk]);
-      if (ps.isMaterial(a)) t -= share[a] * nl.W[kk];
+      if (ps.isMaterial(a) && facesMaterial(ps, w, a)) t -= share[a] * nl.W[kk];
     }
     traction[w] = t / area;
   }

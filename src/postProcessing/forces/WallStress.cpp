@@ -46,7 +46,8 @@ std::vector<SymmTensor> wallDeviatoricStress(const ParticleCloud& cloud, const s
     double weight = 0;
     for (long k = neighbours.start[w]; k < neighbours.start[w + 1]; ++k) {
       const auto b = static_cast<std::size_t>(neighbours.index[static_cast<std::size_t>(k)]);
-      if (cloud.kind[b] != material) continue;
+      // Only the material in front of the wall (a thin wall's support reaches through it).
+      if (cloud.kind[b] != material || (cloud.positions[b] - cloud.positions[w]).dot(cloud.normal[w]) <= 0) continue;
       const double W = neighbours.W[static_cast<std::size_t>(k)];
       sum += W * tau[b];
       weight += W;
