@@ -15,13 +15,12 @@
 
 #include "isph/WallBoundaryPressure.hpp"
 #include "isph/WallFriction.hpp"
+#include "MaterialTableForTest.hpp"
 #include "isph/materials/MaterialTable.hpp"
 
 namespace {
 
 using namespace isph;
-namespace fs = std::filesystem;
-
 constexpr double dx = 0.01;
 
 struct Plate {
@@ -30,11 +29,7 @@ struct Plate {
   std::unique_ptr<MaterialTable> materials;
 
   Plate() {
-    const fs::path file = fs::temp_directory_path() / "WallBoundaryPressureTest.materialProperties";
-    std::ofstream(file) << "FoamFile { version 2.0; format ascii; class dictionary; object materialProperties; }\n"
-                           "materials { sand { model rigidPlastic; rho 1500; phi 30; } }\n";
-    materials = std::make_unique<MaterialTable>(file, std::vector<std::string>{"sand"});
-    fs::remove(file);
+    materials = test::materialTable("WallBoundaryPressureTest", "sand { model rigidPlastic; rho 1500; phi 30; }", {"sand"});
     ParticleCloud& c = ps.cloud;
     c.properties.materials = {"sand"};
     c.properties.patches = {{"plate", 25.0}};

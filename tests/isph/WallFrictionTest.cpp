@@ -10,13 +10,12 @@
 #include <fstream>
 
 #include "isph/WallFriction.hpp"
+#include "MaterialTableForTest.hpp"
 #include "isph/materials/MaterialTable.hpp"
 
 namespace {
 
 using namespace isph;
-namespace fs = std::filesystem;
-
 constexpr double dx = 0.01;
 
 struct Bed {
@@ -25,11 +24,7 @@ struct Bed {
   std::unique_ptr<MaterialTable> materials;
 
   Bed() {
-    const fs::path file = fs::temp_directory_path() / "WallFrictionTest.materialProperties";
-    std::ofstream(file) << "FoamFile { version 2.0; format ascii; class dictionary; object materialProperties; }\n"
-                           "materials { rock { model rigidPlastic; rho 2000; phi 40; } }\n";
-    materials = std::make_unique<MaterialTable>(file, std::vector<std::string>{"rock"});
-    fs::remove(file);
+    materials = test::materialTable("WallFrictionTest", "rock { model rigidPlastic; rho 2000; phi 40; }", {"rock"});
     ParticleCloud& c = ps.cloud;
     c.properties.materials = {"rock"};
     c.properties.patches = {{"rough", 30.0}, {"smooth", 0.0}};
@@ -70,7 +65,9 @@ TEST(WallFriction, TheWallsTakeTheReactionToTheFrictionExactly) {
       EXPECT_EQ(t[w], Vec3::Zero()) << "particle " << w << " is not a wall particle";
       continue;
     }
-    if (b.ps.cloud.patch[w] == 1) EXPECT_EQ(t[w], Vec3::Zero()) << "the free-slip patch takes no friction";
+    if (b.ps.cloud.patch[w] == 1) {
+      EXPECT_EQ(t[w], Vec3::Zero()) << "the free-slip patch takes no friction";
+    }
     onWalls += dx * t[w];  // A_w = dx per metre
   }
   EXPECT_NEAR(onWalls.x(), -sum.x(), 1e-12 * std::abs(sum.x()));
