@@ -43,8 +43,7 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
       for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
         const Vec3 xba = x[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] - x[ua];
         // sectors centred on the lattice directions, so that no lattice neighbour sits on an edge
-        const double angle = std::atan2(xba.y(), xba.x()) + M_PI + M_PI / 8;  // [π/8, 2π + π/8]
-        occupied |= 1u << (static_cast<unsigned>(angle / (M_PI / 4)) & 7u);
+        occupied |= 1u << static_cast<unsigned>(supportSector(xba.x(), xba.y()));
       }
       isSurface = occupied != 0xffu;
     } else if (!isSurface && gradC.norm() * h_ > gradientThreshold_) {
@@ -64,6 +63,14 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
     }
   }
   nSurface_ = static_cast<std::size_t>(surface);
+}
+
+int supportSector(double x, double y) {
+  // w = −(x, y) turned by π/8: sector k is the octant [kπ/4, (k+1)π/4) of w's angle.
+  static const double c = std::cos(M_PI / 8), s = std::sin(M_PI / 8);
+  const double wx = -(c * x - s * y), wy = -(s * x + c * y);
+  if (wy >= 0) return wx > 0 ? (wy < wx ? 0 : 1) : (wy > -wx ? 2 : 3);
+  return wx < 0 ? (-wy < -wx ? 4 : 5) : (-wy > wx ? 6 : 7);
 }
 
 int fullLatticeNeighbourCount(const Kernel& kernel, double dx, const std::string& lattice, int dimension) {

@@ -41,6 +41,13 @@ class FreeSurfaceDetector {
   std::size_t nSurface_ = 0;
 };
 
+// The 2D sector scan's sector (0-7) of the direction (x, y): 45° sectors centred on the
+// lattice directions, sector k spanning the angles θ with θ + π + π/8 in [kπ/4, (k+1)π/4),
+// θ = atan2(y, x). By the signs and magnitudes of the direction turned by π/8, without atan2
+// (which cost 2.4 % of a barrier run); a direction on an edge between two sectors may fall in
+// either.
+int supportSector(double x, double y);
+
 // Neighbours of a particle inside a full lattice (self excluded), for the safety net.
 int fullLatticeNeighbourCount(const Kernel& kernel, double dx, const std::string& lattice, int dimension);
 
