@@ -126,6 +126,20 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
                           : incremental == "all" ? MaterialScope::all
                                                  : MaterialScope::granular;
 
+  const Dictionary lp = d.subDictOrEmpty("laggedPressure");
+  s.laggedForm = lp.getChoiceOrDefault("form", {"pairs", "gradient"}, "pairs") == "gradient"
+                     ? LaggedPressureForm::gradient
+                     : LaggedPressureForm::pairs;
+  s.laggedSmoothing = lp.getOrDefault("smoothing", s.laggedSmoothing);
+  requireRange(lp, "smoothing", s.laggedSmoothing, 0, 10);
+  if (s.laggedForm == LaggedPressureForm::pairs && s.laggedSmoothing > 0) {
+    fatalIOError(lp.findEntry("smoothing")->location(),
+                 fmt::format("keyword 'smoothing' in {}: the pair form uses pⁿ as it is; smoothing needs "
+                             "'form gradient'",
+                             lp.name()));
+  }
+  lp.checkKeywords();
+
   const Dictionary wf = d.subDictOrEmpty("wallFriction");
   if (wf.found("slipSpeed")) {
     s.frictionSlipSpeed = wf.get<double>("slipSpeed");
@@ -198,6 +212,16 @@ std::string IsphSchemes::describe() const {
                                          "force; a second PPE corrects it with the increment)") +
                                  (incrementalPressure == MaterialScope::granular ? " in scenes with a granular material"
                                                                                  : ""));
+    if (incrementalPressure != MaterialScope::none) {
+      out += laggedForm == LaggedPressureForm::pairs
+                 ? std::string("    lagged pressure force: symmetric pair form; the friction walls' pairs give the "
+                               "normal reaction for the Coulomb friction\n")
+                 : fmt::format("    lagged pressure force: the renormalised gradient of Eq. 11 of p^n{}; Coulomb "
+                               "friction from the wall pressures\n",
+                               laggedSmoothing > 0 ? fmt::format(" after {} Shepard pass{}", laggedSmoothing,
+                                                                 laggedSmoothing > 1 ? "es" : "")
+                                                   : std::string());
+    }
   }
   return out;
 }

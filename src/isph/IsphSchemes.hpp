@@ -37,6 +37,10 @@
 //                                    // Eq. 11 corrects with the change (IsphSolver.hpp), in
 //                                    // scenes with a granular material or in all; default none
 //                                    // (slidingBlock uses granular)
+//   laggedPressure   { form pairs; smoothing 0; }  // | gradient: with incrementalPressure,
+//                                    // the force of the last pressure that the viscous solve sees:
+//                                    // the symmetric pair form, or the renormalised gradient of
+//                                    // Eq. 11 of pⁿ smoothed by N Shepard passes (LaggedPressure.hpp)
 //   wallFriction     { slipSpeed 1e-5; passes 10; }  // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
 //                                    // this many velocity solves per step to settle the
@@ -53,6 +57,7 @@ enum class PpeSource { densityInvariant, divergence, mixed };
 enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
 enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
+enum class LaggedPressureForm { pairs, gradient };
 
 struct IsphSchemes {
   Method method = Method::isph;
@@ -93,6 +98,8 @@ struct IsphSchemes {
 
   ViscousTerm viscousTerm = ViscousTerm::implicit;
   MaterialScope incrementalPressure = MaterialScope::none;
+  LaggedPressureForm laggedForm = LaggedPressureForm::pairs;
+  int laggedSmoothing = 0;  // Shepard passes over pⁿ (gradient form)
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
   int frictionPasses = 10;
 

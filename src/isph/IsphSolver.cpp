@@ -16,6 +16,7 @@
 #include "isph/MaterialGradient.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 #include "isph/IntermediateVelocity.hpp"
+#include "isph/LaggedPressure.hpp"
 #include "isph/ParticleCollision.hpp"
 #include "isph/ParticleShifting.hpp"
 #include "isph/VelocityCorrection.hpp"
@@ -266,14 +267,28 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
     std::vector<Vec3> reaction;
     if (incrementalNow()) {
       lagged_.resize(ps_.nMaterial);
-      reaction.assign(ps_.nMaterial, Vec3::Zero());
       std::vector<Vec3> resting(ps_.cloud.U);
       for (std::size_t a = 0; a < ps_.nMaterial; ++a) resting[a] += dt * g_;
       const long n = static_cast<long>(ps_.nMaterial);
+      if (schemes_.laggedForm == LaggedPressureForm::gradient) {
+        // The gradient of Eq. 11 of p̃ (LaggedPressure.hpp); the PPE then solves for p^{n+1} − p̃.
+        if (schemes_.laggedSmoothing > 0) {
+          const std::vector<double> smooth =
+              smoothedPressure(ps_, *kernel_, freeSurface_->flags(), schemes_.laggedSmoothing);
+          std::copy(smooth.begin(), smooth.end(), ps_.cloud.p.begin());
+        }
 #pragma omp parallel for schedule(static)
-      for (long ia = 0; ia < n; ++ia) {
-        const auto a = static_cast<std::size_t>(ia);
-        lagged_[a] = laggedPressureForce(ps_, *kernel_, resting, g_, a, dt, &reaction[a]);
+        for (long ia = 0; ia < n; ++ia) {
+          const auto a = static_cast<std::size_t>(ia);
+          lagged_[a] = -pressureGradient(ps_, correction_, resting, g_, a, dt) / ps_.rho[a];
+        }
+      } else {
+        reaction.assign(ps_.nMaterial, Vec3::Zero());
+#pragma omp parallel for schedule(static)
+        for (long ia = 0; ia < n; ++ia) {
+          const auto a = static_cast<std::size_t>(ia);
+          lagged_[a] = laggedPressureForce(ps_, *kernel_, resting, g_, a, dt, &reaction[a]);
+        }
       }
     }
     friction_->update(ps_, reaction.empty() ? nullptr : &reaction);

@@ -14,14 +14,20 @@
 // particle by its own −dt²∇p/ρ after the viscous solve, which the deviatoric stress never
 // resists: next to the free faces of a stiff block, where ∇p is not a rigid-body field, that
 // spread a block that should stick along its bed at 1.5 cm/s. With it the stress resists the
-// pressure as the coupled equations would, and δp → 0 in material at rest. The pressure
-// force is the conservative pair form, so the pressure inside a zone moving as a rigid body
-// exerts no net force on it, and the walls' pairs are exactly the normal reaction that Coulomb
-// friction is limited by (WallFriction). The first step of a fresh start is a plain one.
+// pressure as the coupled equations would, and δp → 0 in material at rest. By default the
+// lagged pressure force is the conservative pair form, so the pressure inside a zone moving
+// as a rigid body exerts no net force on it, and the walls' pairs are exactly the normal
+// reaction that Coulomb friction is limited by (WallFriction); `laggedPressure { form
+// gradient; smoothing 3; }` uses the gradient of Eq. 11 instead, consistent where the support
+// is cut (LaggedPressure.hpp: with it a collapsing column keeps its static wedge; with the
+// pair form's error at the free surface the column ran off its floor). The first step of a
+// fresh start is a plain one.
 // Not the default: in such zones the pressure is carried from step to step and its
 // distribution is statically undetermined, so it follows the history: a layer at rest on a
 // slope between end walls (granularAtRest) stays put (0.85 mm) but ends with p 20 % (L2) off
-// the infinite-slope lithostatic field, its end walls taking load as buttresses.
+// the infinite-slope lithostatic field, its end walls taking load as buttresses (16 % with
+// the gradient form, a uniform excess of 7 % of ρ g H; the barrier's deposit then presses on
+// the barrier with more than its along-bed weight: columnCollapse/README.md).
 #include <filesystem>
 #include <memory>
 

@@ -8,10 +8,13 @@
 // 3 % of the column's 0.02 m^2; no rod may cross a wall.
 //
 // Two checks of the issue are DISABLED until they pass (issue 5 stays open): the surface
-// within 5 mm RMS of the measured one (5.31 mm now; 4.7 mm at the tutorial's 2 mm) and a static
-// wedge (the rods near the top-left corner move less than dx: 10.3 mm now, the top of the
-// column settles by 7 mm). The corner does not compact: it flows in the active Rankine state,
-// with every rod at yield and etaMax never reached (tutorials/validation/columnCollapse/README.md).
+// within 5 mm RMS of the measured one (4.3-5.5 mm over runs perturbed by their write times
+// and maxCo, so on either side of the limit; 4.7 mm at the tutorial's 2 mm) and a static
+// wedge (the rods near the top-left corner move less than dx: about 10 mm now, the top of the
+// column settles by 7-8 mm). The corner does not compact: the plain projection's splitting
+// error makes the rods behind the failure surface creep. With the incremental projection in
+// the gradient form (the last test here) the wedge holds, but its top rods at the square's
+// edge still go with the late failure (tutorials/validation/columnCollapse/README.md).
 // Run them by hand with
 //   build/tests/testIsphValidation --gtest_also_run_disabled_tests --gtest_filter='ColumnCollapse*'
 #include <gtest/gtest.h>
@@ -35,64 +38,74 @@ constexpr double dx = 0.0025, H = 0.1, L = 0.2, measuredRunOut = 0.4423;
 
 struct Deposit {
   std::string crossings;
-  double runOut = 0, rms = 0, wallHeight = 0, area = 0, cornerMove = 0, maxSpeed = 0;
+  double runOut = 0, rms = 0, wallHeight = 0, area = 0, cornerMove = 0, cornerMeanMove = 0, maxSpeed = 0;
   int cornerRods = 0;
 };
+
+// Runs the case at dx to 0.8 s (with `schemes` appended to system/isphSchemes) and measures
+// its deposit against the experiment.
+void runAndMeasure(const std::string& name, const std::string& schemes, Deposit& d) {
+  const auto measured = readProfileCsv(std::string(ISPH_TUTORIALS) +
+                                       "/columnCollapse/validation/granular_collapse_bui2008_final_surface.csv");
+  ASSERT_GE(measured.size(), 10u);
+  CaseRunner c("columnCollapse", name);
+  c.set("system/particleMeshDict", "spacing", std::to_string(dx));
+  c.set("system/controlDict", "endTime", "0.8");
+  c.set("system/controlDict", "writeInterval", "0.8");
+  if (!schemes.empty()) c.append("system/isphSchemes", schemes);
+  ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
+  d.crossings = c.logValue("isphLandslideFoam", "Wall crossings in the run:");
+
+  const ParticleCloud start = readCloud(c.path() / "0", "particles");
+  const ParticleCloud end = readCloud(c.path() / "0.8", "particles");
+  RunOutSpec toe;
+  toe.minNeighbours = 2;
+  const auto front = runOut(end, toe);
+  ASSERT_TRUE(front) << "no material left";
+  d.runOut = *front;
+
+  SurfaceSpec bins;
+  bins.binWidth = dx;
+  bins.xMin = 0;
+  bins.xMax = 0.6;
+  const SurfaceProfile surface = surfaceProfile(end, bins);
+  d.rms = rmsDistance(surface, measured);
+  d.wallHeight = surface.height.front();
+  for (std::size_t k = 0; k < surface.x.size(); ++k) d.area += surface.height[k] * bins.binWidth;
+
+  // The wedge: rods that start within 0.02 m of the top-left corner (x = 0, y = H).
+  std::map<label, Vec3> initial;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    if (start.kind[i] == 0) initial[start.origId[i]] = start.positions[i];
+  }
+  for (std::size_t i = 0; i < end.size(); ++i) {
+    if (end.kind[i] != 0) continue;
+    d.maxSpeed = std::max(d.maxSpeed, end.U[i].norm());
+    const Vec3& x0 = initial.at(end.origId[i]);
+    if (x0.x() < 0.02 && x0.y() > H - 0.02) {
+      ++d.cornerRods;
+      const double move = (end.positions[i] - x0).norm();
+      d.cornerMove = std::max(d.cornerMove, move);
+      d.cornerMeanMove += move;
+    }
+  }
+  if (d.cornerRods > 0) d.cornerMeanMove /= d.cornerRods;
+  std::printf("toe %.4f m (measured %.4f m, %+.1f%%), surface RMS %.2f mm, height at the wall %.4f m, "
+              "area %.5f m^2 (column %.5f), corner rods (%d) moved %.2f mm on average and %.2f mm at most (dx "
+              "%.1f mm), peak speed at 0.8 s %.3g m/s\n",
+              d.runOut, measuredRunOut, 100 * (d.runOut / measuredRunOut - 1), 1e3 * d.rms, d.wallHeight, d.area,
+              L * H, d.cornerRods, 1e3 * d.cornerMeanMove, 1e3 * d.cornerMove, 1e3 * dx, d.maxSpeed);
+  for (const auto& p : measured) {
+    std::printf("  x %.4f  measured %.4f  computed %.4f\n", p.x, p.height, surface.heightAt(p.x));
+  }
+}
 
 class ColumnCollapse : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const auto measured = readProfileCsv(std::string(ISPH_TUTORIALS) +
-                                         "/columnCollapse/validation/granular_collapse_bui2008_final_surface.csv");
-    ASSERT_GE(measured.size(), 10u);
-    CaseRunner c("columnCollapse", "columnCollapse");
-    c.set("system/particleMeshDict", "spacing", std::to_string(dx));
-    c.set("system/controlDict", "endTime", "0.8");
-    c.set("system/controlDict", "writeInterval", "0.8");
-    ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
     deposit_ = std::make_unique<Deposit>();
-    Deposit& d = *deposit_;
-    d.crossings = c.logValue("isphLandslideFoam", "Wall crossings in the run:");
-
-    const ParticleCloud start = readCloud(c.path() / "0", "particles");
-    const ParticleCloud end = readCloud(c.path() / "0.8", "particles");
-    RunOutSpec toe;
-    toe.minNeighbours = 2;
-    const auto front = runOut(end, toe);
-    ASSERT_TRUE(front) << "no material left";
-    d.runOut = *front;
-
-    SurfaceSpec bins;
-    bins.binWidth = dx;
-    bins.xMin = 0;
-    bins.xMax = 0.6;
-    const SurfaceProfile surface = surfaceProfile(end, bins);
-    d.rms = rmsDistance(surface, measured);
-    d.wallHeight = surface.height.front();
-    for (std::size_t k = 0; k < surface.x.size(); ++k) d.area += surface.height[k] * bins.binWidth;
-
-    // The wedge: rods that start within 0.02 m of the top-left corner (x = 0, y = H).
-    std::map<label, Vec3> initial;
-    for (std::size_t i = 0; i < start.size(); ++i) {
-      if (start.kind[i] == 0) initial[start.origId[i]] = start.positions[i];
-    }
-    for (std::size_t i = 0; i < end.size(); ++i) {
-      if (end.kind[i] != 0) continue;
-      d.maxSpeed = std::max(d.maxSpeed, end.U[i].norm());
-      const Vec3& x0 = initial.at(end.origId[i]);
-      if (x0.x() < 0.02 && x0.y() > H - 0.02) {
-        ++d.cornerRods;
-        d.cornerMove = std::max(d.cornerMove, (end.positions[i] - x0).norm());
-      }
-    }
-    std::printf("toe %.4f m (measured %.4f m, %+.1f%%), surface RMS %.2f mm, height at the wall %.4f m, "
-                "area %.5f m^2 (column %.5f), corner rods (%d) moved at most %.2f mm (dx %.1f mm), peak speed at "
-                "0.8 s %.3g m/s\n",
-                d.runOut, measuredRunOut, 100 * (d.runOut / measuredRunOut - 1), 1e3 * d.rms, d.wallHeight, d.area,
-                L * H, d.cornerRods, 1e3 * d.cornerMove, 1e3 * dx, d.maxSpeed);
-    for (const auto& p : measured) {
-      std::printf("  x %.4f  measured %.4f  computed %.4f\n", p.x, p.height, surface.heightAt(p.x));
-    }
+    runAndMeasure("columnCollapse", "", *deposit_);
+    if (::testing::Test::HasFatalFailure()) deposit_.reset();
   }
   static void TearDownTestSuite() { deposit_.reset(); }
 
@@ -118,6 +131,32 @@ TEST_F(ColumnCollapse, DISABLED_SurfaceWithinFiveMillimetresOfTheMeasuredOne) {
 TEST_F(ColumnCollapse, DISABLED_StaticWedgeAgainstTheWall) {
   ASSERT_GT(deposit_->cornerRods, 0);
   EXPECT_LT(deposit_->cornerMove, dx) << "the rods near the top-left corner must stay put";
+}
+
+// The incremental projection with the lagged pressure in the gradient form of Eq. 11
+// (IsphSolver.hpp, LaggedPressure.hpp): the viscous solve sees the force of the last
+// pressure, so the splitting error of the plain projection, which makes the rods behind the
+// failure surface creep at several mm/s (the corner settles by 6.8 mm on average with the
+// case's default schemes), is gone where the pressure needs no increment. The wedge against
+// the wall stays: its top within 2 % of the column's 0.1 m (0.0985-0.0990 m in four runs
+// perturbed by their write times and maxCo; 0.092 m with the default) and the 64 corner rods
+// moving less than dx on average (0.9-1.3 mm; 6.8 mm with the default). The toe and area as
+// in the default case. The maximum over the corner rods is not asserted: the top rods at the
+// edge of the 0.02 m square go with the failure that works back from the front (2.7-4.4 mm),
+// as the disabled test above records. Not the case's default: README, "The incremental
+// projection".
+TEST(ColumnCollapseIncrementalGradient, KeepsTheWedgeAgainstTheWall) {
+  Deposit d;
+  ASSERT_NO_FATAL_FAILURE(runAndMeasure("columnGradient",
+                                        "incrementalPressure granular;\n"
+                                        "laggedPressure { form gradient; smoothing 3; }\n",
+                                        d));
+  EXPECT_EQ(d.crossings, "0");
+  EXPECT_NEAR(d.runOut / measuredRunOut, 1.0, 0.08) << "final toe against the experiment";
+  EXPECT_NEAR(d.area / (L * H), 1.0, 0.03) << "area under the final surface (incompressible)";
+  EXPECT_NEAR(d.wallHeight / H, 1.0, 0.02) << "the top of the wedge against the wall";
+  ASSERT_GT(d.cornerRods, 0);
+  EXPECT_LT(d.cornerMeanMove, dx) << "mean motion of the rods near the top-left corner";
 }
 
 }  // namespace

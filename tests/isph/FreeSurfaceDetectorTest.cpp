@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "LatticeBlockForTest.hpp"
 #include "isph/FreeSurfaceDetector.hpp"
 
 namespace {
@@ -56,22 +57,8 @@ constexpr double dx = 0.01;
 constexpr int n = 10;
 
 // The n × n block without the particles of `removed` (lattice indices j n + i).
-ParticleSystem block(const Kernel& kernel, std::vector<int> removed = {}) {
-  ParticleSystem ps;
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      if (std::find(removed.begin(), removed.end(), j * n + i) == removed.end())
-        ps.cloud.positions.emplace_back((i + 0.5) * dx, (j + 0.5) * dx, 0.0);
-    }
-  }
-  const std::size_t count = ps.cloud.positions.size();
-  ps.cloud.normal.assign(count, Vec3::Zero());
-  ps.dimension = 2;
-  ps.dx = dx;
-  ps.nMaterial = count;
-  ps.volume.assign(count, dx * dx);
-  ps.neighbours.build(ps.cloud.positions, kernel);
-  return ps;
+ParticleSystem block(const Kernel& kernel, const std::vector<int>& removed = {}) {
+  return test::latticeBlock(kernel, n, dx, removed);
 }
 
 FreeSurfaceDetector detector(const Kernel& kernel) {

@@ -86,6 +86,34 @@ TEST(IsphSchemes, UnknownMethodIsAnError) {
   EXPECT_THROW(schemesFrom("method sph;\n"), FatalError);
 }
 
+TEST(IsphSchemes, LaggedPressureIsThePairFormUnlessTheGradientIsAskedFor) {
+  const IsphSchemes plain = schemesFrom("incrementalPressure granular;\n");
+  EXPECT_EQ(plain.laggedForm, LaggedPressureForm::pairs);
+  EXPECT_EQ(plain.laggedSmoothing, 0);
+  EXPECT_NE(plain.describe().find("symmetric pair form"), std::string::npos) << plain.describe();
+  const IsphSchemes s =
+      schemesFrom("incrementalPressure granular;\nlaggedPressure { form gradient; smoothing 3; }\n");
+  EXPECT_EQ(s.laggedForm, LaggedPressureForm::gradient);
+  EXPECT_EQ(s.laggedSmoothing, 3);
+  EXPECT_NE(s.describe().find("renormalised gradient of Eq. 11 of p^n after 3 Shepard passes"), std::string::npos)
+      << s.describe();
+  EXPECT_EQ(schemesFrom("").describe().find("lagged pressure"), std::string::npos)
+      << "nothing is lagged without the incremental projection";
+}
+
+TEST(IsphSchemes, SmoothingThePairFormIsAnErrorAtItsLine) {
+  try {
+    schemesFrom("incrementalPressure granular;\nlaggedPressure\n{\n    smoothing 2;\n}\n");
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("form gradient"), std::string::npos) << m;
+    EXPECT_EQ(e.where().line, 4);
+  }
+  EXPECT_THROW(schemesFrom("laggedPressure { form divergence; }\n"), FatalError);
+  EXPECT_THROW(schemesFrom("laggedPressure { form gradient; smoothing 11; }\n"), FatalError);
+}
+
 }  // namespace
 TEST(IsphSchemes, ShiftingNearTheSurfaceIsOffUnlessPairsAreAskedFor) {
   EXPECT_FALSE(schemesFrom("").shiftPairsNearSurface);
