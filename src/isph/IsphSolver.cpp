@@ -374,6 +374,7 @@ StepReport IsphSolver::step(const Time& time) {
   intermediateVelocity(time, report);
   if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
     viscous_->renumbered();  // nothing has moved yet; a retry (stepWithRetry) builds a fresh hierarchy for U
+    ps_.cloud.p = pStart_;   // (the lagged pressure's smoothing may have changed it)
     return report;
   }
   {
