@@ -186,6 +186,17 @@ check "failure message shows the end of the log" grep -q "something went wrong" 
 rc=$?
 check "runApplication failure stops a 'set -e' caller [status $rc]" test "$rc" = 3
 
+# A solver stopped by Ctrl-C ends by SIGINT (isphLandslideFoam.cpp): status 130, reported
+# as stopped (not failed), and an Allrun's '|| exit 1' then skips what follows.
+err=$(runApplication -o sh -c 'echo "Stopped by a signal at time 0.5"; kill -INT $$' 2>&1 >/dev/null)
+rc=$?
+check "runApplication returns 130 for an app ended by SIGINT [got $rc]" test "$rc" = 130
+check "it says stopped by a signal [got '${err%%$'\n'*}']" \
+    grep -q "^sh stopped by a signal (exit status 130): see log.sh" <<< "$err"
+check "and shows the end of the log" grep -q "Stopped by a signal at time 0.5" <<< "$err"
+after=$(runApplication -o sh -c 'kill -INT $$' >/dev/null 2>&1 || exit 1; echo "post-processing")
+check "an Allrun's '|| exit 1' stops after it [got '$after']" test -z "$after"
+
 echo "== runApplication: progress on fd 3"
 # A fake solver: its own output on stdout and stderr, its progress on $ISPH_PROGRESS_FD
 apps="$scratch/apps"

@@ -3,6 +3,8 @@
 // writes time directories as system/controlDict says; every time directory is a restart.
 // With isphSchemes `method wcsph;` it runs the explicit weakly-compressible baseline instead.
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
+// Ctrl-C (SIGINT) or SIGTERM writes the time at the end of the step and then ends the process by
+// that signal (exit status 130 or 143), so a calling Allrun stops as well.
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 #include <fmt/format.h>
@@ -82,11 +84,22 @@ void run(const isph::ArgList& args) {
              std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count(),
              static_cast<double>(std::clock() - loopCpuStart) / CLOCKS_PER_SEC);
   isph::info("Time spent per phase:\n{}", solver.timer().table());
+  if (isph::Time::stopRequested())
+    isph::info("\nStopped by a signal at time {} (written and complete): continue from it with startFrom latestTime;",
+               time.timeName());
 }
 
 }  // namespace
 
 int main(int argc, char* argv[]) {
-  isph::ParallelEnvironment parallel(argc, argv);
-  return isph::runApplication(spec, argc, argv, run);
+  int status = 0;
+  {
+    isph::ParallelEnvironment parallel(argc, argv);
+    status = isph::runApplication(spec, argc, argv, run);
+  }
+  // Stopped by Ctrl-C or SIGTERM: the last time is written; end by that signal (status 130 or
+  // 143), so that an Allrun running this solver stops instead of post-processing a run that
+  // did not reach endTime.
+  if (status == 0) isph::Time::exitBySignalIfCaught();
+  return status;
 }

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <ctime>
+#include <iostream>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
@@ -281,6 +283,16 @@ void Time::installSignalHandlers() {
 }
 
 bool Time::stopRequested() { return signalCaught != 0; }
+
+void Time::exitBySignalIfCaught() {
+  const int sig = signalCaught;
+  if (sig == 0) return;
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
 
 std::string Time::executionTimeLine() const {
   const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;

@@ -69,6 +69,11 @@ class Time {
   // First SIGINT/SIGTERM: write at the end of the next step and stop; a second one aborts.
   static void installSignalHandlers();
   static bool stopRequested();
+  // After a run stopped that way has written and shut down: ends the process by the signal
+  // it caught, with the default action (status 130 for SIGINT, 143 for SIGTERM), so that a
+  // calling script (Allrun) stops too instead of post-processing a run that did not reach
+  // endTime. Returns (doing nothing) when no signal was caught.
+  static void exitBySignalIfCaught();
 
   // "ExecutionTime = 1.23 s  ClockTime = 2 s" (process CPU time, wall-clock since construction).
   std::string executionTimeLine() const;
