@@ -147,6 +147,9 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   }
   s.frictionPasses = wf.getOrDefault("passes", s.frictionPasses);
   requireRange(wf, "passes", s.frictionPasses, 1, 20);
+  s.frictionNormal = wf.getChoiceOrDefault("normalForce", {"wallPressure", "hydrostatic"}, "wallPressure") == "hydrostatic"
+                         ? FrictionNormal::hydrostatic
+                         : FrictionNormal::wallPressure;
   wf.checkKeywords();
 
   d.checkKeywords();
@@ -222,6 +225,10 @@ std::string IsphSchemes::describe() const {
                                                                  laggedSmoothing > 1 ? "es" : "")
                                                    : std::string());
     }
+  }
+  if (frictionNormal == FrictionNormal::hydrostatic) {
+    out += "    Coulomb wall friction: tan delta times the material's pressure carried hydrostatically to each wall "
+           "particle\n";
   }
   return out;
 }

@@ -41,11 +41,17 @@
 //                                    // the force of the last pressure that the viscous solve sees:
 //                                    // the symmetric pair form, or the renormalised gradient of
 //                                    // Eq. 11 of pⁿ smoothed by N Shepard passes (LaggedPressure.hpp)
-//   wallFriction     { slipSpeed 1e-5; passes 10; }  // slipSpeed [m/s]: Coulomb walls stick
+//   wallFriction     { slipSpeed 1e-5; passes 10; normalForce wallPressure; }
+//                                    // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
 //                                    // this many velocity solves per step to settle the
 //                                    // stick/slip state of each particle on a wall (2-3 on
-//                                    // average; see WallFrictionActiveSet.hpp)
+//                                    // average; see WallFrictionActiveSet.hpp); normalForce: the
+//                                    // capacity is tan δ times the walls' pressure (wallPressure),
+//                                    // or times the material's pressure carried to the wall
+//                                    // hydrostatically (hydrostatic; WallFriction.hpp). With
+//                                    // incrementalPressure and laggedPressure pairs it is the
+//                                    // wall pairs' normal reaction whatever this says
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -58,6 +64,7 @@ enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
 enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
 enum class LaggedPressureForm { pairs, gradient };
+enum class FrictionNormal { wallPressure, hydrostatic };  // the wall stress the Coulomb capacity is tan δ times
 
 struct IsphSchemes {
   Method method = Method::isph;
@@ -102,6 +109,7 @@ struct IsphSchemes {
   int laggedSmoothing = 0;  // Shepard passes over pⁿ (gradient form)
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
   int frictionPasses = 10;
+  FrictionNormal frictionNormal = FrictionNormal::wallPressure;
 
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.

@@ -98,7 +98,7 @@ IsphSolver::IsphSolver(const Time& time) {
   }
   solution.checkKeywords({"U"});
   if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
-  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed);
+  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed, schemes_.frictionNormal);
   if (friction_->active()) wallFriction_.assign(ps_.size(), Vec3::Zero());  // (none before the first step)
   ps_.frictionWall.assign(ps_.size(), 0);
   for (std::size_t b = ps_.wallBegin(); b < ps_.size(); ++b) {

@@ -9,8 +9,8 @@
 namespace isph {
 
 WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity,
-                           double slipSpeed)
-    : slipSpeed_(slipSpeed), gravity_(gravity) {
+                           double slipSpeed, FrictionNormal normalStress)
+    : slipSpeed_(slipSpeed), gravity_(gravity), normalStress_(normalStress) {
   for (const auto& patch : ps.cloud.properties.patches) {
     tanDelta_.push_back(std::tan(patch.frictionAngle * std::numbers::pi / 180.0));
   }
@@ -41,20 +41,25 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
   for (long iw = static_cast<long>(ps.wallBegin()); iw < wallEnd; ++iw) {
     const auto w = static_cast<std::size_t>(iw);
     const double tanDelta = tanDelta_[static_cast<std::size_t>(c.patch[w])];
-    if (tanDelta <= 0 || c.p[w] <= 0) continue;
-    double sum = 0, rhoSum = 0;
+    const bool hydrostatic = normalStress_ == FrictionNormal::hydrostatic;
+    if (tanDelta <= 0 || (!hydrostatic && c.p[w] <= 0)) continue;
+    double sum = 0, rhoSum = 0, carried = 0;
     for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
-      const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
       if (ps.isMaterial(b) && slides_[static_cast<std::size_t>(c.material[b])] && facesMaterial(ps, w, b)) {
-        sum += nl.W[static_cast<std::size_t>(k)];
-        rhoSum += nl.W[static_cast<std::size_t>(k)] * ps.rho[b];
+        sum += nl.W[kk];
+        rhoSum += nl.W[kk] * ps.rho[b];
+        if (hydrostatic) carried += nl.W[kk] * std::max(0.0, c.p[b] + ps.rho[b] * gravity_.dot(c.positions[w] - c.positions[b]));
       }
     }
     if (sum <= 0) continue;
+    const double pw = hydrostatic ? carried / sum : c.p[w];
+    if (pw <= 0) continue;
     // σ_w = p_w + the half layer that p = 0 on the free surface leaves out (the material's
     // weight per area between the surface particles' centres and the real surface).
     const double pressing = std::max(0.0, -gravity_.dot(c.normal[w]));
-    const double sigma = c.p[w] + 0.5 * (rhoSum / sum) * pressing * ps.dx;
+    const double sigma = pw + 0.5 * (rhoSum / sum) * pressing * ps.dx;
     share[w] = tanDelta * sigma * area / sum;
   }
 

@@ -15,6 +15,17 @@
 // free surface, would press on the bed with half its weight and slide too far; the
 // rigid-plastic model adds the same half layer to its strength).
 //
+// `wallFriction { normalForce hydrostatic; }` (system/isphSchemes) takes σ_w instead from the
+// material in front of w carried to it hydrostatically, the Shepard mean of
+// max(p_a + ρ_a g·(x_w − x_a), 0), plus the same half layer: without the normal condition's
+// ρ u*·n/dt r_n of the wall pressure (WallBoundaryPressure.hpp), which turns a particle's
+// normal velocity into pressure in proportion to its distance r_n from the wall. A fast thin
+// stream (granularSlope) rattles against its bed; the pressure answers each approach and not
+// each departure (where the material is at p = 0 it may leave freely), so the walls' pressure
+// under it averages several times its weight and the friction brakes the stream (README
+// there). The material's own pressure p_a, which the PPE sets with that condition, still
+// carries impacts and the lithostatic load.
+//
 // Only materials with WallContact::coulombFriction feel it (a fluid sticks instead); a
 // patch without a friction angle is a free-slip wall for them.
 //
@@ -28,6 +39,7 @@
 #include <vector>
 
 #include "core/Types.hpp"
+#include "isph/IsphSchemes.hpp"
 #include "isph/ParticleSystem.hpp"
 
 namespace isph {
@@ -35,7 +47,8 @@ namespace isph {
 class WallFriction {
  public:
   // Active only if some patch has a friction angle and some material slides on walls.
-  WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity, double slipSpeed);
+  WallFriction(const ParticleSystem& ps, const MaterialTable& materials, const Vec3& gravity, double slipSpeed,
+               FrictionNormal normalStress = FrictionNormal::wallPressure);
 
   bool active() const { return active_; }
   // Some material slides on walls (whether or not any patch has friction).
@@ -73,6 +86,7 @@ class WallFriction {
   bool anySlides_ = false;
   double slipSpeed_ = 0;
   Vec3 gravity_ = Vec3::Zero();
+  FrictionNormal normalStress_ = FrictionNormal::wallPressure;
   std::vector<double> tanDelta_;   // per patch
   std::vector<char> slides_;       // per material: coulombFriction
   std::vector<double> capacity_;   // F_a

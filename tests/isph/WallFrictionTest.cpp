@@ -8,7 +8,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
+#include "isph/WallBoundaryPressure.hpp"
 #include "isph/WallFriction.hpp"
 #include "MaterialTableForTest.hpp"
 #include "isph/materials/MaterialTable.hpp"
@@ -18,25 +20,31 @@ namespace {
 using namespace isph;
 constexpr double dx = 0.01;
 
+// `rows` rows of rock on the bed. Bed(): two sliding rows at 100 Pa, the walls at 500 Pa;
+// Bed(n, lithostatic): n rows at rest with the pressure ρ g ((n − ½) dx − y), the walls at 0.
 struct Bed {
   ParticleSystem ps;
   std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", 1.3 * dx, 2);
   std::unique_ptr<MaterialTable> materials;
+  static constexpr double rho = 2000, g = 9.81;
 
-  Bed() {
+  explicit Bed(int rows = 2, bool lithostatic = false) {
     materials = test::materialTable("WallFrictionTest", "rock { model rigidPlastic; rho 2000; phi 40; }", {"rock"});
     ParticleCloud& c = ps.cloud;
     c.properties.materials = {"rock"};
     c.properties.patches = {{"rough", 30.0}, {"smooth", 0.0}};
     c.properties.spacing = dx;
+    const double wallP = lithostatic ? 0.0 : 500.0;
     for (int i = 0; i < 20; ++i) {
       const double x = (i + 0.5) * dx;
       const label patch = i < 10 ? 0 : 1;
-      c.push_back(Vec3(x, 0, 0), 100 + i, Vec3::Zero(), 500.0, -1, ParticleKind::wall, patch, Vec3(0, 1, 0), 0);
-      c.push_back(Vec3(x, -dx, 0), 200 + i, Vec3::Zero(), 500.0, -1, ParticleKind::dummy, patch, Vec3::Zero(), 0);
-      for (int j = 0; j < 2; ++j) {
-        c.push_back(Vec3(x, (j + 0.5) * dx, 0), 2 * i + j, Vec3(1, 0, 0), 100.0, 0, ParticleKind::material, -1,
-                    Vec3::Zero(), 2000 * dx * dx);
+      c.push_back(Vec3(x, 0, 0), 1000 + i, Vec3::Zero(), wallP, -1, ParticleKind::wall, patch, Vec3(0, 1, 0), 0);
+      c.push_back(Vec3(x, -dx, 0), 2000 + i, Vec3::Zero(), wallP, -1, ParticleKind::dummy, patch, Vec3::Zero(), 0);
+      for (int j = 0; j < rows; ++j) {
+        const double y = (j + 0.5) * dx;
+        const double p = lithostatic ? rho * g * ((rows - 0.5) * dx - y) : 100.0;
+        c.push_back(Vec3(x, y, 0), rows * i + j, lithostatic ? Vec3::Zero() : Vec3(1, 0, 0), p, 0,
+                    ParticleKind::material, -1, Vec3::Zero(), rho * dx * dx);
       }
     }
     initialiseParticleSystem(ps, *materials, *kernel);
@@ -94,6 +102,57 @@ TEST(WallFriction, ExplicitFrictionReportsTheForceItApplied) {
     }
   }
   EXPECT_GT(slowed, 0);
+}
+
+// The capacity's wall stress. Six rows of rock (dx = 0.01 m, ρ = 2000) at rest on the same
+// bed, with their lithostatic pressure ρ g (5.5 dx − y) (p = 0 at the top row's centres): both
+// ways of taking σ_w give Σ_a F_a = tan δ × the weight of the rock over the rough patch
+// (σ_w = ρ g 5.5 dx at the wall line, plus the half layer: 6 rows). Then the bottom three
+// rows rattle: every other particle's u* points 0.05 m/s into the bed, the others' 0.05 m/s
+// out of it (zero mean; dt = 1 ms). The walls' pressure answers the approaches with
+// ρ u*·n/dt r_n and the departures only down to −p_a (WallBoundaryPressure.hpp), so the
+// wall-pressure capacity rises above the weight (1.27 times); the hydrostatic one does not move.
+struct Layer : Bed {
+  static constexpr int rows = 6;
+
+  Layer() : Bed(rows, true) {
+    ps.frictionWall.assign(ps.size(), 0);
+    for (std::size_t b = ps.wallBegin(); b < ps.size(); ++b) ps.frictionWall[b] = ps.cloud.patch[b] == 0;
+    ps.wallPullLimit.assign(ps.cloud.p.begin(), ps.cloud.p.begin() + static_cast<long>(ps.nMaterial));
+    ps.wallTangentialGradient.assign(ps.nMaterial, Vec3::Zero());  // flat and at rest
+  }
+
+  // Σ_a F_a after the walls take their pressure from u*.
+  double capacity(FrictionNormal normal, const std::vector<Vec3>& ustar, double dt) {
+    updateWallPressure(ps, ustar, Vec3(0, -g, 0), dt);
+    WallFriction friction(ps, *materials, Vec3(0, -g, 0), 1e-5, normal);
+    friction.update(ps);
+    double sum = 0;
+    for (std::size_t a = 0; a < ps.nMaterial; ++a) sum += friction.capacity(a);
+    return sum;
+  }
+};
+
+TEST(WallFriction, CapacityIsTanDeltaTimesTheWeightAndTheHydrostaticOneIgnoresRattling) {
+  Layer l;
+  const double dt = 1e-3;
+  const double expected = std::tan(30.0 * std::numbers::pi / 180.0) * 10 * Layer::rows * Layer::rho * dx * dx * Layer::g;
+  std::vector<Vec3> resting(l.ps.size(), Vec3::Zero());
+  for (std::size_t a = 0; a < l.ps.nMaterial; ++a) resting[a] = dt * Vec3(0, -Layer::g, 0);  // u* of a layer at rest
+  // The wall line is 0.5 dx below the bottom row: the lattice's kernel sums are exact there.
+  EXPECT_NEAR(l.capacity(FrictionNormal::wallPressure, resting, dt) / expected, 1.0, 0.01);
+  EXPECT_NEAR(l.capacity(FrictionNormal::hydrostatic, resting, dt) / expected, 1.0, 0.01);
+
+  std::vector<Vec3> rattling = resting;
+  for (std::size_t a = 0; a < l.ps.nMaterial; ++a) {
+    if (l.ps.cloud.positions[a].y() < 3 * dx) rattling[a].y() += (l.ps.cloud.origId[a] % 2 == 0 ? -0.05 : 0.05);
+  }
+  const double wallPressure = l.capacity(FrictionNormal::wallPressure, rattling, dt) / expected;
+  const double hydrostatic = l.capacity(FrictionNormal::hydrostatic, rattling, dt) / expected;
+  std::printf("capacity over tan(delta) x weight, rattling: wall pressure %.3f, hydrostatic %.3f\n", wallPressure,
+              hydrostatic);
+  EXPECT_GT(wallPressure, 1.2) << "the rattle should raise the walls' pressure (1.27 measured; else this test shows nothing)";
+  EXPECT_NEAR(hydrostatic, 1.0, 0.01);
 }
 
 }  // namespace
