@@ -140,6 +140,11 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   }
   lp.checkKeywords();
 
+  s.pressureGradient = d.getChoiceOrDefault("pressureGradient", {"renormalised", "symmetric"}, "renormalised") ==
+                               "symmetric"
+                           ? PressureGradientForm::symmetric
+                           : PressureGradientForm::renormalised;
+
   const Dictionary wf = d.subDictOrEmpty("wallFriction");
   if (wf.found("slipSpeed")) {
     s.frictionSlipSpeed = wf.get<double>("slipSpeed");
@@ -225,6 +230,9 @@ std::string IsphSchemes::describe() const {
                                                                  laggedSmoothing > 1 ? "es" : "")
                                                    : std::string());
     }
+  }
+  if (pressureGradient == PressureGradientForm::symmetric) {
+    out += "    pressure gradient of Eq. 11: symmetric, sum m_b (p_a/rho_a^2 + p_b/rho_b^2) grad W (as the paper)\n";
   }
   if (frictionNormal == FrictionNormal::hydrostatic) {
     out += "    Coulomb wall friction: tan delta times the material's pressure carried hydrostatically to each wall "

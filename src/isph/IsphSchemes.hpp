@@ -41,6 +41,10 @@
 //                                    // the force of the last pressure that the viscous solve sees:
 //                                    // the symmetric pair form, or the renormalised gradient of
 //                                    // Eq. 11 of pⁿ smoothed by N Shepard passes (LaggedPressure.hpp)
+//   pressureGradient renormalised;   // | symmetric: Eq. 11 as the renormalised difference
+//                                    // L_a Σ V_b (p_b − p_a)∇W (VelocityCorrection.hpp), or as the
+//                                    // paper writes it, Σ m_b (p_a/ρ_a² + p_b/ρ_b²)∇W, whose pairs
+//                                    // repel under pressure (walls on their lattice positions)
 //   wallFriction     { slipSpeed 1e-5; passes 10; normalForce wallPressure; }
 //                                    // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
@@ -64,7 +68,8 @@ enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
 enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
 enum class LaggedPressureForm { pairs, gradient };
-enum class FrictionNormal { wallPressure, hydrostatic };  // the wall stress the Coulomb capacity is tan δ times
+enum class FrictionNormal { wallPressure, hydrostatic };
+enum class PressureGradientForm { renormalised, symmetric };  // Eq. 11  // the wall stress the Coulomb capacity is tan δ times
 
 struct IsphSchemes {
   Method method = Method::isph;
@@ -110,6 +115,7 @@ struct IsphSchemes {
   double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
   int frictionPasses = 10;
   FrictionNormal frictionNormal = FrictionNormal::wallPressure;
+  PressureGradientForm pressureGradient = PressureGradientForm::renormalised;
 
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.

@@ -401,7 +401,8 @@ StepReport IsphSolver::step(const Time& time) {
       for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustarTotal[a] -= dt * lagged_[a];
       updateWallPressure(ps_, ustarTotal, g_, dt);
     } else {
-      correctVelocity(ps_, correction_, ustar_, g_, dt);
+      correctVelocity(ps_, correction_, ustar_, g_, dt,
+                      schemes_.pressureGradient == PressureGradientForm::symmetric ? kernel_.get() : nullptr);
     }
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
       ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);

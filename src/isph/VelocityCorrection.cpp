@@ -19,13 +19,14 @@ Vec3 pressureGradient(const ParticleSystem& ps, const KernelGradientCorrection& 
 }
 
 void correctVelocity(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
-                     const Vec3& g, double dt) {
+                     const Vec3& g, double dt, const Kernel* symmetric) {
   const long n = static_cast<long>(ps.nMaterial);
   std::vector<Vec3> U(ps.nMaterial);
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
-    U[ua] = ustar[ua] - dt / ps.rho[ua] * pressureGradient(ps, L, ustar, g, ua, dt);  // Eq. 11
+    U[ua] = symmetric ? Vec3(ustar[ua] + dt * laggedPressureForce(ps, *symmetric, ustar, g, ua, dt))  // Eq. 11
+                      : Vec3(ustar[ua] - dt / ps.rho[ua] * pressureGradient(ps, L, ustar, g, ua, dt));
   }
   std::copy(U.begin(), U.end(), ps.cloud.U.begin());
 }

@@ -7,6 +7,14 @@
 // symmetric form Σ m_b (p_a/ρ_a² + p_b/ρ_b²)∇W conserves momentum but is inconsistent where
 // the support is cut, which leaves an error of order g dt/2 on every surface particle;
 // particle shifting keeps the difference form's particle distribution regular.
+// The paper writes Eq. 11 in the symmetric form, and `pressureGradient symmetric;`
+// (system/isphSchemes) uses it: its pairs repel under pressure, which the difference form's
+// do not (a uniform pressure has no gradient). Where shifting cannot act, in a stream a few
+// particles thick, the difference form lets particles pair up to the collision distance and
+// the pairs then read as compression (granularSlope jammed on its slope; its README). The
+// symmetric form is not exact for a linear pressure: a granular layer at rest on a 20° slope
+// crept 12.9 mm in 2 s with it (granularAtRest, 5 mm spacing; 0.25 dx allowed), so it is not
+// the default.
 #include <vector>
 
 #include "isph/KernelGradientCorrection.hpp"
@@ -36,8 +44,10 @@ void correctVelocityIncrement(ParticleSystem& ps, const KernelGradientCorrection
 Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const std::vector<Vec3>& ustar,
                          const Vec3& g, std::size_t a, double dt, Vec3* frictionReaction = nullptr);
 
-// Sets ps.cloud.U of the material particles from u* and the pressure.
+// Sets ps.cloud.U of the material particles from u* and the pressure: Eq. 11 with the
+// renormalised difference gradient, or, with `symmetric`, in the paper's symmetric form
+// (laggedPressureForce of p^{n+1}).
 void correctVelocity(ParticleSystem& ps, const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
-                     const Vec3& g, double dt);
+                     const Vec3& g, double dt, const Kernel* symmetric = nullptr);
 
 }  // namespace isph
