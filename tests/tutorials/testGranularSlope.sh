@@ -7,7 +7,7 @@
 #    draining through it: 12.7 % measured; 0.04 % at 8 mm), and sand has run out at least
 #    0.2 m over the floor;
 #  - the deposit: the middle section of its face within 5 deg of the sand's 33 deg angle of
-#    repose (29.6 deg measured at 12 mm, 32.4 deg at 8 mm, with the paper's symmetric Eq. 11;
+#    repose (29.6 deg measured at 12 mm, 32.4 deg at 8 mm, 28.7 deg at 4 mm, with the paper's symmetric Eq. 11;
 #    9-21 deg with the difference form, which jammed on the slope: the tutorial's README);
 #  - wall crossings: at most 5, each put back by the penetration guard. With the symmetric
 #    Eq. 11 4 particles of 1,007 crossed the floor near the toe in 7,134 steps at 12 mm (1 of
