@@ -68,8 +68,8 @@ enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
 enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
 enum class LaggedPressureForm { pairs, gradient };
-enum class FrictionNormal { wallPressure, hydrostatic };
-enum class PressureGradientForm { renormalised, symmetric };  // Eq. 11  // the wall stress the Coulomb capacity is tan δ times
+enum class FrictionNormal { wallPressure, hydrostatic };       // the wall stress the Coulomb capacity is tan δ times
+enum class PressureGradientForm { renormalised, symmetric };  // the form of Eq. 11
 
 struct IsphSchemes {
   Method method = Method::isph;

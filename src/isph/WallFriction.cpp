@@ -37,11 +37,11 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
   std::vector<double> share(n, 0.0);
   // (With the normal reaction given, the wall pressures are not needed.)
   const long wallEnd = reaction ? static_cast<long>(ps.wallBegin()) : static_cast<long>(ps.dummyBegin());
+  const bool hydrostatic = normalStress_ == FrictionNormal::hydrostatic;
 #pragma omp parallel for schedule(static)
   for (long iw = static_cast<long>(ps.wallBegin()); iw < wallEnd; ++iw) {
     const auto w = static_cast<std::size_t>(iw);
     const double tanDelta = tanDelta_[static_cast<std::size_t>(c.patch[w])];
-    const bool hydrostatic = normalStress_ == FrictionNormal::hydrostatic;
     if (tanDelta <= 0 || (!hydrostatic && c.p[w] <= 0)) continue;
     double sum = 0, rhoSum = 0, carried = 0;
     for (long k = nl.start[w]; k < nl.start[w + 1]; ++k) {
