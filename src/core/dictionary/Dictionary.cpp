@@ -40,10 +40,8 @@ Entry::~Entry() = default;
 Dictionary::Dictionary(std::string name, SourceLocation loc) : name_(std::move(name)), loc_(std::move(loc)) {}
 
 const Entry* Dictionary::findEntry(std::string_view key) const {
-  for (const auto& e : entries_) {
-    if (e.key() == key) return &e;
-  }
-  return nullptr;
+  const auto it = index_.find(key);
+  return it == index_.end() ? nullptr : &entries_[it->second];
 }
 
 bool Dictionary::isDict(std::string_view key) const {
@@ -149,20 +147,28 @@ void Dictionary::echoDefault(std::string_view key, const std::string& value) con
 void Dictionary::checkKeywords(const std::vector<std::string>& alsoValid) const {
   std::vector<std::string> valid(queried_.begin(), queried_.end());
   valid.insert(valid.end(), alsoValid.begin(), alsoValid.end());
+  const std::set<std::string_view> validSet(valid.begin(), valid.end());
+  // A few warnings say what is wrong; thousands (a data file read as a dictionary) bury it.
+  constexpr std::size_t maxWarnings = 20;
+  std::size_t unknown = 0;
   for (const auto& e : entries_) {
-    if (e.key() == "FoamFile") continue;
-    if (std::find(valid.begin(), valid.end(), e.key()) != valid.end()) continue;
+    if (e.key() == "FoamFile" || validSet.count(e.key())) continue;
+    if (++unknown > maxWarnings) continue;
     warning(fmt::format("unknown keyword '{}' in dictionary {} is ignored{}", e.key(), name_,
                         didYouMean(e.key(), valid)),
             e.location());
+  }
+  if (unknown > maxWarnings) {
+    warning(fmt::format("{} more unknown keywords in dictionary {} are ignored", unknown - maxWarnings, name_),
+            loc_);
   }
 }
 
 // ---- Dictionary: construction and writing --------------------------------------------
 
 void Dictionary::add(Entry entry) {
-  for (auto& e : entries_) {
-    if (e.key() != entry.key()) continue;
+  if (const auto it = index_.find(entry.key()); it != index_.end()) {
+    Entry& e = entries_[it->second];
     if (e.isDict() && entry.isDict()) {
       for (const auto& sub : entry.dict().entries()) e.dict().add(sub);
     } else {
@@ -170,13 +176,19 @@ void Dictionary::add(Entry entry) {
     }
     return;
   }
+  index_.emplace(entry.key(), entries_.size());
   entries_.push_back(std::move(entry));
 }
 
 bool Dictionary::remove(std::string_view key) {
-  const auto it = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key() == key; });
-  if (it == entries_.end()) return false;
-  entries_.erase(it);
+  const auto it = index_.find(key);
+  if (it == index_.end()) return false;
+  const std::size_t at = it->second;
+  entries_.erase(entries_.begin() + static_cast<std::ptrdiff_t>(at));
+  index_.erase(it);
+  for (auto& [k, position] : index_) {
+    if (position > at) --position;
+  }
   return true;
 }
 
@@ -189,14 +201,11 @@ void Dictionary::setRaw(std::string_view key, std::string_view valueText) {
 }
 
 Dictionary& Dictionary::subDictOrAdd(std::string_view key) {
-  for (auto& e : entries_) {
-    if (e.key() == key && e.isDict()) return e.dict();
+  if (const auto it = index_.find(key); it != index_.end() && entries_[it->second].isDict()) {
+    return entries_[it->second].dict();
   }
   add(Entry(std::string(key), loc_, Dictionary(name_ + "/" + std::string(key), loc_)));
-  for (auto& e : entries_) {
-    if (e.key() == key) return e.dict();
-  }
-  fatalError("internal error: sub-dictionary not added");
+  return entries_[index_.find(key)->second].dict();
 }
 
 namespace {

@@ -14,15 +14,18 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/Log.hpp"
+#include "core/dictionary/DictionaryLimits.hpp"
 #include "core/dictionary/Token.hpp"
 #include "core/dictionary/ValueTraits.hpp"
 
 namespace isph {
 
 class Dictionary;
+
 
 class Entry {
  public:
@@ -113,7 +116,10 @@ class Dictionary {
   void set(std::string_view key, const char* value) { set(key, std::string(value)); }
   void setRaw(std::string_view key, std::string_view valueText);
   Dictionary& subDictOrAdd(std::string_view key);
-  void add(Entry entry);  // replaces (or, for two dictionaries, merges into) an entry of that key
+  // Replaces (or, for two dictionaries, merges into) an entry of that key; constant time, as
+  // is findEntry (a hash index beside the ordered entries), so that parsing is linear in the
+  // number of entries.
+  void add(Entry entry);
   bool remove(std::string_view key);
 
   // OpenFOAM syntax, entries in order; `indent` spaces before each line.
@@ -124,9 +130,15 @@ class Dictionary {
   TokenReader valueReader(const Entry& e, std::string_view key) const;
   void echoDefault(std::string_view key, const std::string& value) const;
 
+  struct KeyHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view key) const { return std::hash<std::string_view>{}(key); }
+  };
+
   std::string name_;
   SourceLocation loc_;
   std::vector<Entry> entries_;
+  std::unordered_map<std::string, std::size_t, KeyHash, std::equal_to<>> index_;  // key -> entries_ position
   mutable std::set<std::string, std::less<>> queried_;
 };
 

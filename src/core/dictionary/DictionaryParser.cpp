@@ -2,14 +2,14 @@
 // (with scoping) and #include / #includeEtc / #includeIfPresent / #remove directives.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include "core/EtcFiles.hpp"
 #include "core/Strings.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/dictionary/Lexer.hpp"
+#include "core/io/ReadFile.hpp"
 
 namespace isph {
 
@@ -17,14 +17,49 @@ namespace {
 
 constexpr int maxIncludeDepth = 32;
 
-std::string readWholeFile(const std::filesystem::path& file, bool& ok) {
-  std::ifstream in(file, std::ios::binary);
-  ok = static_cast<bool>(in);
-  if (!ok) return {};
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+// The text of a dictionary file: a regular file within DictionaryLimits (FatalError otherwise).
+std::string readDictionaryText(const std::filesystem::path& file) {
+  return readWholeFile(file, DictionaryLimits::maxFileBytes, "a dictionary");
 }
+
+// How deep the sub-dictionaries of `d` go (0: none) and how many entries it holds in all.
+int depthOf(const Dictionary& d) {
+  int depth = 0;
+  for (const auto& e : d.entries()) {
+    if (e.isDict()) depth = std::max(depth, 1 + depthOf(e.dict()));
+  }
+  return depth;
+}
+
+std::size_t sizeOf(const Dictionary& d) {
+  std::size_t n = d.size();
+  for (const auto& e : d.entries()) {
+    if (e.isDict()) n += sizeOf(e.dict());
+  }
+  return n;
+}
+
+// What one parse (a file and its #includes) has used of the limits.
+struct ParseBudget {
+  std::size_t bytes = 0;
+  std::size_t substituted = 0;
+  void substitute(std::size_t n, const Token& variable) {
+    substituted += n;
+    if (substituted > DictionaryLimits::maxSubstituted) {
+      fatalIOError(variable.loc, fmt::format("'${}': the $ substitutions of this dictionary copy more than {} "
+                                             "entries and tokens (substitutions of substitutions?)",
+                                             variable.text, DictionaryLimits::maxSubstituted));
+    }
+  }
+  void add(std::size_t n, const SourceLocation& where, const std::filesystem::path& file) {
+    bytes += n;
+    if (bytes > DictionaryLimits::maxTotalBytes) {
+      fatalIOError(where, fmt::format("#include \"{}\": the dictionary and its #include files hold more than "
+                                      "the {} MiB one dictionary may hold (a file including itself?)",
+                                      file.string(), DictionaryLimits::maxTotalBytes >> 20));
+    }
+  }
+};
 
 // Expands $VAR and ${VAR} from the environment and a leading ~ in #include file names.
 std::string expandEnvironment(const std::string& s, const SourceLocation& loc) {
@@ -58,9 +93,16 @@ std::string expandEnvironment(const std::string& s, const SourceLocation& loc) {
 
 class Parser {
  public:
+  // `nesting`: the sub-dictionaries open around the text (an #include continues the
+  // nesting of the dictionary it stands in).
   Parser(std::string_view text, std::shared_ptr<const std::string> file, std::vector<Dictionary*>& scopes,
-         int includeDepth)
-      : lexer_(text, file), file_(std::move(file)), scopes_(scopes), includeDepth_(includeDepth) {}
+         int includeDepth, int nesting, ParseBudget& budget)
+      : lexer_(text, file),
+        file_(std::move(file)),
+        scopes_(scopes),
+        includeDepth_(includeDepth),
+        nesting_(nesting),
+        budget_(budget) {}
 
   // Parse entries into `dict` until the end of the text (or the closing '}' when braced).
   void parseBody(Dictionary& dict, const Token* openBrace, bool firstEntryOnly = false);
@@ -75,11 +117,23 @@ class Parser {
                           bool searchUp) const;
   std::filesystem::path directory() const { return std::filesystem::path(*file_).parent_path(); }
 
+  // FatalError at `where` when `depth` levels are more than DictionaryLimits::maxNesting.
+  static void checkNesting(int depth, const SourceLocation& where, const std::string& what);
+
   Lexer lexer_;
   std::shared_ptr<const std::string> file_;
   std::vector<Dictionary*>& scopes_;
   int includeDepth_;
+  int nesting_;
+  ParseBudget& budget_;
 };
+
+void Parser::checkNesting(int depth, const SourceLocation& where, const std::string& what) {
+  if (depth <= DictionaryLimits::maxNesting) return;
+  fatalIOError(where, fmt::format("{} nested more than {} levels deep; no case needs so many (a missing '}}' "
+                                  "or ')'?)",
+                                  what, DictionaryLimits::maxNesting));
+}
 
 void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntryOnly) {
   scopes_.push_back(&dict);
@@ -107,6 +161,9 @@ void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntry
                                          "expanded at keyword position",
                                          t->text));
       }
+      checkNesting(nesting_ + depthOf(source.dict()), t->loc,
+                   fmt::format("'${}' expands to sub-dictionaries", t->text));
+      budget_.substitute(sizeOf(source.dict()), *t);
       const Dictionary copy = source.dict();
       for (const auto& e : copy.entries()) dict.add(e);
       if (auto p = lexer_.peek(); p && p->isPunct(';')) lexer_.next();
@@ -124,14 +181,20 @@ void Parser::parseEntry(Dictionary& dict, Token key) {
   std::optional<Token> t = lexer_.peek();
   if (t && t->isPunct('{')) {
     const Token open = *lexer_.next();
+    checkNesting(nesting_ + 1, open.loc, fmt::format("sub-dictionary '{}' is", key.text));
     Dictionary sub(dict.name().empty() ? key.text : dict.name() + "/" + key.text, key.loc);
+    ++nesting_;
     parseBody(sub, &open);
+    --nesting_;
     dict.add(Entry(key.text, key.loc, std::move(sub)));
     return;
   }
 
   std::vector<Token> tokens;
   std::vector<Token> open;  // unclosed ( [ { within the value
+  // Where the last token of the value was read (a $ substitution's tokens keep the place they
+  // came from, which may be lines above).
+  SourceLocation last = key.loc;
   for (;;) {
     std::optional<Token> next = lexer_.next();
     if (!next) {
@@ -139,27 +202,23 @@ void Parser::parseEntry(Dictionary& dict, Token key) {
         fatalIOError(open.back().loc, fmt::format("'{}' opened here in the value of '{}' is not closed",
                                                   open.back().text, key.text));
       }
-      const SourceLocation& at = tokens.empty() ? key.loc : tokens.back().loc;
-      fatalIOError(at, fmt::format("missing ';' at the end of entry '{}'", key.text));
+      fatalIOError(last, fmt::format("missing ';' at the end of entry '{}'", key.text));
     }
     Token& tok = *next;
     if (open.empty()) {
       if (tok.isPunct(';')) break;
       if (tok.isPunct('}') || tok.isPunct(')') || tok.isPunct(']')) {
-        if (tok.isPunct('}')) {
-          const SourceLocation& at = tokens.empty() ? key.loc : tokens.back().loc;
-          fatalIOError(at, fmt::format("missing ';' at the end of entry '{}'", key.text));
-        }
+        if (tok.isPunct('}')) fatalIOError(last, fmt::format("missing ';' at the end of entry '{}'", key.text));
         fatalIOError(tok.loc, fmt::format("unexpected '{}' in the value of '{}'", tok.text, key.text));
       }
       // A new line that starts with a word after a complete value is almost always the next
       // keyword after a forgotten ';'.
-      if (!tokens.empty() && tok.loc.line > tokens.back().loc.line &&
+      if (!tokens.empty() && tok.loc.line > last.line &&
           (tok.isWord() || tok.isString() || tok.kind == TokenKind::Variable ||
            (tok.isNumber() && !(lexer_.peek() && (lexer_.peek()->isPunct('(') || lexer_.peek()->isPunct('{')))))) {
-        fatalIOError(tokens.back().loc, fmt::format("missing ';' at the end of entry '{}' (the next line "
-                                                    "starts with {})",
-                                                    key.text, tok.describe()));
+        fatalIOError(last, fmt::format("missing ';' at the end of entry '{}' (the next line "
+                                       "starts with {})",
+                                       key.text, tok.describe()));
       }
     }
     if (tok.kind == TokenKind::Directive) {
@@ -172,17 +231,23 @@ void Parser::parseEntry(Dictionary& dict, Token key) {
         std::optional<Token> after = lexer_.peek();
         if (tokens.empty() && open.empty() && after && after->isPunct(';')) {
           lexer_.next();
+          checkNesting(nesting_ + 1 + depthOf(source.dict()), tok.loc,
+                       fmt::format("'${}' expands to sub-dictionaries", tok.text));
+          budget_.substitute(sizeOf(source.dict()), tok);
           Dictionary copy = source.dict();
           dict.add(Entry(key.text, key.loc, std::move(copy)));
           return;
         }
         fatalIOError(tok.loc, fmt::format("'${}' is a dictionary and can only stand alone as a value", tok.text));
       }
+      budget_.substitute(source.tokens().size(), tok);
       tokens.insert(tokens.end(), source.tokens().begin(), source.tokens().end());
+      last = tok.loc;
       continue;
     }
     if (tok.isPunct('(') || tok.isPunct('[') || tok.isPunct('{')) {
       open.push_back(tok);
+      checkNesting(static_cast<int>(open.size()), tok.loc, fmt::format("the value of '{}' has brackets", key.text));
     } else if (tok.isPunct(')') || tok.isPunct(']') || tok.isPunct('}')) {
       const char expected = open.back().text[0] == '(' ? ')' : open.back().text[0] == '[' ? ']' : '}';
       if (tok.text[0] != expected) {
@@ -191,6 +256,7 @@ void Parser::parseEntry(Dictionary& dict, Token key) {
       }
       open.pop_back();
     }
+    last = tok.loc;
     tokens.push_back(std::move(tok));
   }
   dict.add(Entry(key.text, key.loc, std::move(tokens)));
@@ -234,15 +300,21 @@ void Parser::includeFile(Dictionary& dict, const std::filesystem::path& path, co
     fatalIOError(where.loc, fmt::format("#include nested more than {} deep (a file including itself?)",
                                         maxIncludeDepth));
   }
-  bool ok = false;
-  const std::string text = readWholeFile(path, ok);
-  if (!ok) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
     if (optional) return;
     fatalIOError(where.loc, fmt::format("cannot open the #include file \"{}\" (looked for {})", where.text,
                                         path.lexically_normal().string()));
   }
+  std::string text;
+  try {
+    text = readDictionaryText(path);
+  } catch (const FatalError& e) {  // not a regular file, too large, unreadable: said where it is included
+    fatalIOError(where.loc, fmt::format("#include \"{}\": {}", where.text, e.what()));
+  }
+  budget_.add(text.size(), where.loc, path);
   auto file = std::make_shared<const std::string>(path.lexically_normal().string());
-  Parser inner(text, file, scopes_, includeDepth_ + 1);
+  Parser inner(text, file, scopes_, includeDepth_ + 1, nesting_, budget_);
   scopes_.pop_back();  // the included body continues the current dictionary's scope
   inner.parseBody(dict, nullptr);
   scopes_.push_back(&dict);
@@ -313,20 +385,19 @@ const Entry& Parser::resolve(const Token& variable) const {
 }  // namespace
 
 Dictionary Dictionary::readFile(const std::filesystem::path& file) {
-  bool ok = false;
-  const std::string text = readWholeFile(file, ok);
-  if (!ok) {
-    fatalError(fmt::format("cannot open file {}\n    (does the case have it? {})", file.string(),
-                           std::filesystem::exists(file) ? "it exists but cannot be read" : "no such file"));
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    fatalError(fmt::format("cannot open file {}\n    (does the case have it? no such file)", file.string()));
   }
-  return parse(text, file.string());
+  return parse(readDictionaryText(file), file.string());
 }
 
 Dictionary Dictionary::parse(std::string_view text, const std::string& fileName) {
   auto file = std::make_shared<const std::string>(fileName);
   Dictionary dict(fileName, SourceLocation{file, 0, 0});
   std::vector<Dictionary*> scopes;
-  Parser parser(text, file, scopes, 0);
+  ParseBudget budget{text.size()};
+  Parser parser(text, file, scopes, 0, 0, budget);
   parser.parseBody(dict, nullptr);
   return dict;
 }
@@ -335,7 +406,8 @@ Dictionary Dictionary::parseHeader(std::string_view text, const std::string& fil
   auto file = std::make_shared<const std::string>(fileName);
   Dictionary dict(fileName, SourceLocation{file, 0, 0});
   std::vector<Dictionary*> scopes;
-  Parser parser(text, file, scopes, 0);
+  ParseBudget budget{0};
+  Parser parser(text, file, scopes, 0, 0, budget);
   parser.parseBody(dict, nullptr, true);
   end = parser.offset();
   return dict;

@@ -1,10 +1,15 @@
 #include "core/dictionary/Lexer.hpp"
 
+#include "core/dictionary/DictionaryLimits.hpp"
+
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 namespace isph {
 
@@ -49,6 +54,18 @@ std::string Token::spelling() const {
   }
 }
 
+namespace {
+
+// The value of a number spelled `body` (no leading '+') whose magnitude is beyond a double's
+// range: ±inf when too large, the nearest double (0 or subnormal) when too small.
+double outOfRangeValue(std::string_view body) {
+  const std::string copy(body);
+  errno = 0;
+  return std::strtod(copy.c_str(), nullptr);
+}
+
+}  // namespace
+
 bool parseNumber(std::string_view s, double& value, bool& isInteger) {
   if (s.empty()) return false;
   std::string_view body = s;
@@ -58,11 +75,31 @@ bool parseNumber(std::string_view s, double& value, bool& isInteger) {
   if (!(std::isdigit(static_cast<unsigned char>(c0)) || c0 == '-' || c0 == '.')) return false;
   const char* first = body.data();
   const char* last = body.data() + body.size();
-  const auto result = std::from_chars(first, last, value);
-  if (result.ec != std::errc{} || result.ptr != last) return false;
-  if (!std::isfinite(value)) return false;
+  double v = 0;
+  const auto result = std::from_chars(first, last, v);
+  if (result.ptr != last) return false;
+  if (result.ec == std::errc::result_out_of_range) {
+    v = outOfRangeValue(body);
+  } else if (result.ec != std::errc{}) {
+    return false;
+  }
+  if (!std::isfinite(v)) return false;
+  value = v;
   isInteger = body.find_first_of(".eE") == std::string_view::npos;
   return true;
+}
+
+bool isNonFiniteNumber(std::string_view s) {
+  std::string_view body = s;
+  if (!body.empty() && (body.front() == '+' || body.front() == '-')) body.remove_prefix(1);
+  std::string lower(body);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "nan" || lower == "inf" || lower == "infinity") return true;
+  if (lower.empty() || !(std::isdigit(static_cast<unsigned char>(lower[0])) || lower[0] == '.')) return false;
+  double v = 0;
+  const auto result = std::from_chars(lower.data(), lower.data() + lower.size(), v);
+  return result.ptr == lower.data() + lower.size() && result.ec == std::errc::result_out_of_range &&
+         !std::isfinite(outOfRangeValue(lower));
 }
 
 Lexer::Lexer(std::string_view text, std::shared_ptr<const std::string> fileName)
@@ -107,13 +144,22 @@ Token Lexer::make(TokenKind kind, std::string text, int line, int column) const 
   return t;
 }
 
+void Lexer::checkLength(std::size_t length, int line, int column) const {
+  if (length <= DictionaryLimits::maxTokenBytes) return;
+  fatalIOError(SourceLocation{file_, line, column},
+               fmt::format("a word or string longer than {} KiB: no dictionary entry needs one (a missing "
+                           "closing '\"'?)",
+                           DictionaryLimits::maxTokenBytes >> 10));
+}
+
 std::string Lexer::readRun() {
-  std::string run;
+  const int line = line_, column = column_;
+  const std::size_t start = pos_;
   while (!endsWord(at(pos_)) && !(at(pos_) == '/' && (at(pos_ + 1) == '/' || at(pos_ + 1) == '*'))) {
-    run += text_[pos_];
     advance();
+    checkLength(pos_ - start, line, column);
   }
-  return run;
+  return std::string(text_.substr(start, pos_ - start));
 }
 
 Token Lexer::lexString(int line, int column) {
@@ -134,6 +180,7 @@ Token Lexer::lexString(int line, int column) {
     }
     value += c;
     advance();
+    checkLength(value.size(), line, column);
   }
   return make(TokenKind::String, std::move(value), line, column);
 }
@@ -147,6 +194,7 @@ Token Lexer::lexVariable(int line, int column) {
     while (pos_ < text_.size() && text_[pos_] != '}') {
       name += text_[pos_];
       advance();
+      checkLength(name.size(), line, column);
     }
     if (pos_ >= text_.size()) fatalIOError(start, "unterminated '${': missing '}'");
     advance();

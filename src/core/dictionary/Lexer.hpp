@@ -33,6 +33,8 @@ class Lexer {
   Token lexVariable(int line, int column);
   Token lexWordOrNumber(int line, int column);
   std::string readRun();
+  // FatalError at the token's start when it grows beyond DictionaryLimits::maxTokenBytes.
+  void checkLength(std::size_t length, int line, int column) const;
 
   std::string_view text_;
   std::shared_ptr<const std::string> file_;
@@ -44,7 +46,12 @@ class Lexer {
   std::size_t peekedOffset_ = 0;
 };
 
-// True when the whole of `s` is a number; sets value and whether it is an integer.
+// True when the whole of `s` is a finite number; sets value and whether it is an integer. A
+// number too small for a double (1e-400) reads as the nearest one (0), as strtod does.
 bool parseNumber(std::string_view s, double& value, bool& isInteger);
+
+// True when `s` is spelled as a number that is not finite: nan, inf, infinity (any case,
+// signed) or one too large for a double (1e400). Readers of numbers say "not a finite number".
+bool isNonFiniteNumber(std::string_view s);
 
 }  // namespace isph

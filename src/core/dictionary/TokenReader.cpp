@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/dictionary/Lexer.hpp"
+
 namespace isph {
 
 TokenReader::TokenReader(const std::vector<Token>& tokens, std::string context,
@@ -25,6 +27,20 @@ const Token& TokenReader::next() {
   const Token& t = peek();
   ++i_;
   return t;
+}
+
+const Token& TokenReader::nextNumber(const std::string& what) {
+  if (!atEnd()) {
+    const Token& t = tokens_[i_];
+    if (t.isNumber()) {
+      ++i_;
+      return t;
+    }
+    if (t.isWord() && isNonFiniteNumber(t.text)) {
+      errorAt(t, fmt::format("'{}' is not a finite number; expected {}", t.text, what));
+    }
+  }
+  expected(what);
 }
 
 void TokenReader::expectPunct(char c, const std::string& what) {

@@ -16,6 +16,9 @@ class TokenReader {
   bool atEnd() const { return i_ >= tokens_.size(); }
   const Token& peek() const;  // error at the end of the entry
   const Token& next();
+  // Consume a number and return it, or report that `what` was expected; a word spelled as a
+  // number that is not finite (nan, inf, 1e400) is reported as "not a finite number".
+  const Token& nextNumber(const std::string& what);
   // Consume the punctuation `c` or report that `what` expected it.
   void expectPunct(char c, const std::string& what);
   bool acceptPunct(char c);

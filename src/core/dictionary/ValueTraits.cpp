@@ -61,9 +61,8 @@ DimensionSet ValueTraits<DimensionSet>::read(TokenReader& in) {
   int n = 0;
   while (!in.atEnd() && !in.peek().isPunct(']')) {
     const Token& t = in.peek();
-    if (!t.isNumber()) in.expected("numeric exponents in the dimension set");
     if (n >= 7) in.errorAt(t, "a dimension set has at most 7 exponents");
-    d.exponents[static_cast<std::size_t>(n++)] = in.next().number;
+    d.exponents[static_cast<std::size_t>(n++)] = in.nextNumber("numeric exponents in the dimension set").number;
   }
   in.expectPunct(']', "closing the dimension set");
   if (n != 5 && n != 7) {

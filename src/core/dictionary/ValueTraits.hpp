@@ -24,12 +24,7 @@ std::string formatScalar(double value);
 template <std::floating_point T>
 struct ValueTraits<T> {
   static std::string expected() { return "a number"; }
-  static T read(TokenReader& in) {
-    const Token& t = in.peek();
-    if (!t.isNumber()) in.expected(expected());
-    in.next();
-    return static_cast<T>(t.number);
-  }
+  static T read(TokenReader& in) { return static_cast<T>(in.nextNumber(expected()).number); }
   static std::string write(T v) { return formatScalar(static_cast<double>(v)); }
 };
 
@@ -39,7 +34,8 @@ struct ValueTraits<T> {
   static std::string expected() { return "an integer"; }
   static T read(TokenReader& in) {
     const Token& t = in.peek();
-    if (!t.isNumber() || !t.isInteger) in.expected(expected());
+    if (!t.isNumber()) in.nextNumber(expected());  // throws (and says so for nan or inf)
+    if (!t.isInteger) in.expected(expected());
     if (t.number < static_cast<double>(std::numeric_limits<T>::min()) ||
         t.number > static_cast<double>(std::numeric_limits<T>::max())) {
       in.errorAt(t, fmt::format("integer {} is out of range", t.text));
@@ -83,12 +79,7 @@ struct ValueTraits<Eigen::Matrix<double, N, 1>> {
     if (in.atEnd() || !in.peek().isPunct('(')) in.expected(expected());
     in.next();
     V v;
-    for (int k = 0; k < N; ++k) {
-      if (in.atEnd() || !in.peek().isNumber()) {
-        in.expected(fmt::format("{} numbers in {}", N, expected()));
-      }
-      v[k] = in.next().number;
-    }
+    for (int k = 0; k < N; ++k) v[k] = in.nextNumber(fmt::format("{} numbers in {}", N, expected())).number;
     if (in.atEnd() || !in.peek().isPunct(')')) in.expected(fmt::format("')' closing {}", expected()));
     in.next();
     return v;

@@ -8,19 +8,9 @@
 namespace isph {
 namespace {
 
+using test::expectErrorAt;
 using test::expectFatal;
 using test::TempDir;
-
-// The error is located in `file` at `line` and its message contains every `part`.
-void expectErrorAt(const FatalError& e, const std::string& file, int line,
-                   std::initializer_list<std::string> parts) {
-  ASSERT_TRUE(e.where().file) << e.what();
-  EXPECT_EQ(*e.where().file, file) << e.report();
-  EXPECT_EQ(e.where().line, line) << e.report();
-  const std::string report = e.report();
-  EXPECT_NE(report.find(file + ", line " + std::to_string(line)), std::string::npos) << report;
-  for (const auto& part : parts) EXPECT_NE(report.find(part), std::string::npos) << "missing '" << part << "' in" << report;
-}
 
 TEST(DictionaryErrors, MissingSemicolonBeforeTheNextKeyword) {
   const auto e = expectFatal([] { Dictionary::parse("endTime 2.5\ndeltaT 1e-4;\n", "system/controlDict"); });

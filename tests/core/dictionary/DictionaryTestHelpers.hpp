@@ -47,4 +47,15 @@ inline FatalError expectFatal(const std::function<void()>& f) {
   return FatalError("none");
 }
 
+// The error is located in `file` at `line` and its message contains every `part`.
+inline void expectErrorAt(const FatalError& e, const std::string& file, int line,
+                          std::initializer_list<std::string> parts) {
+  ASSERT_TRUE(e.where().file) << e.what();
+  EXPECT_EQ(*e.where().file, file) << e.report();
+  EXPECT_EQ(e.where().line, line) << e.report();
+  const std::string report = e.report();
+  EXPECT_NE(report.find(file + ", line " + std::to_string(line)), std::string::npos) << report;
+  for (const auto& part : parts) EXPECT_NE(report.find(part), std::string::npos) << "missing '" << part << "' in" << report;
+}
+
 }  // namespace isph::test
