@@ -47,5 +47,34 @@ TEST(CsvPoints, Errors) {
   EXPECT_NE(std::string(e.what()).find("missing.csv"), std::string::npos);
 }
 
+// nan and inf were read as coordinates (issue 34); a device was read until memory ran out.
+TEST(CsvPoints, NonFiniteValuesAndHostileFilesAreRefused) {
+  test::TempCase c;
+  for (const std::string bad : {"nan", "inf", "-Infinity", "1e400"}) {
+    const auto file = c.write("ground.csv", "x,y\n0,0\n1," + bad + "\n");
+    const FatalError e = test::expectFatal([&] { readCsvPoints(file, {}); });
+    EXPECT_EQ(e.where().line, 3) << e.report();
+    EXPECT_NE(e.report().find("y = '" + bad + "' is not a finite number"), std::string::npos) << e.report();
+  }
+  // Without a header a first line of nan is data, not a header without x and y.
+  auto file = c.write("slip.csv", "nan,0\n1,1\n");
+  FatalError e = test::expectFatal([&] { readCsvPoints(file, {}); });
+  EXPECT_EQ(e.where().line, 1);
+  EXPECT_NE(e.report().find("x = 'nan' is not a finite number"), std::string::npos) << e.report();
+
+  const SourceLocation keyword{std::make_shared<const std::string>("system/particleMeshDict"), 7, 5};
+  e = test::expectFatal([&] { readCsvPoints("/dev/zero", keyword); });
+  EXPECT_EQ(e.where().line, 7);
+  EXPECT_NE(e.report().find("not a regular file"), std::string::npos) << e.report();
+
+  file = c.write("long.csv", "x,y\n" + std::string(2 << 20, '1') + "\n");
+  e = test::expectFatal([&] { readCsvPoints(file, {}); });
+  EXPECT_EQ(e.where().line, 2);
+  EXPECT_NE(e.report().find("longer than 1024 KiB"), std::string::npos) << e.report();
+  file = c.write("wide.csv", "x,y\n" + std::string(5000, ',') + "\n");
+  e = test::expectFatal([&] { readCsvPoints(file, {}); });
+  EXPECT_NE(e.report().find("more than 1024 columns"), std::string::npos) << e.report();
+}
+
 }  // namespace
 }  // namespace isph

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <bit>
+#include <cmath>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
@@ -107,6 +108,23 @@ T readValue(FieldTextScanner& in) {
   }
 }
 
+// Binary data holds whatever bits were written: nan and inf are refused as the ascii reader
+// refuses them, naming the value and its byte offset (`in` is at the start of the data).
+template <class T>
+void checkFinite(const FieldTextScanner& in, const std::vector<T>& values) {
+  if constexpr (!std::is_same_v<T, label>) {
+    constexpr int nc = FieldTraits<T>::nComponents;
+    const auto* c = static_cast<const scalar*>(static_cast<const void*>(values.data()));
+    const std::size_t total = values.size() * nc;
+    for (std::size_t k = 0; k < total; ++k) {
+      if (std::isfinite(c[k])) continue;
+      in.error(fmt::format("value {} of {} (component {} at byte {} of the file) is not a finite number ({}) in "
+                           "the binary data",
+                           k / nc + 1, values.size(), k % nc + 1, in.offset() + k * sizeof(scalar), c[k]));
+    }
+  }
+}
+
 template <class T>
 std::vector<T> readBinaryList(FieldTextScanner& in, std::size_t n) {
   // `(` is followed directly by the raw bytes, and they by `)`.
@@ -119,6 +137,7 @@ std::vector<T> readBinaryList(FieldTextScanner& in, std::size_t n) {
   }
   std::vector<T> values(n);
   if (n > 0) std::memcpy(static_cast<void*>(values.data()), in.text().data() + in.offset(), bytes);
+  checkFinite(in, values);
   in.skipBytes(bytes);
   if (in.peek() != ')') {
     in.error(fmt::format(
@@ -246,8 +265,13 @@ void writeField(const std::filesystem::path& file, const std::vector<T>& values,
 template <class T>
 std::vector<T> readField(const std::filesystem::path& file,
                          std::optional<std::size_t> expectedSize) {
-  const std::string text = readFileBytes(file);
-  const FieldHeader h = parseFieldHeader(text, file.string());
+  return parseField<T>(readFileBytes(file), file.string(), expectedSize);
+}
+
+template <class T>
+std::vector<T> parseField(std::string_view text, const std::string& fileName,
+                          std::optional<std::size_t> expectedSize) {
+  const FieldHeader h = parseFieldHeader(text, fileName);
   if (h.className != FieldTraits<T>::className) {
     fatalIOError(h.classLocation, fmt::format("field '{}' is a {} but a {} was expected here",
                                               h.object, h.className, FieldTraits<T>::className));
@@ -265,7 +289,8 @@ std::vector<T> readField(const std::filesystem::path& file,
   template std::string fieldClassName<T>();                                        \
   template void writeField<T>(const std::filesystem::path&, const std::vector<T>&, \
                               const FieldWriteOptions&);                           \
-  template std::vector<T> readField<T>(const std::filesystem::path&, std::optional<std::size_t>);
+  template std::vector<T> readField<T>(const std::filesystem::path&, std::optional<std::size_t>); \
+  template std::vector<T> parseField<T>(std::string_view, const std::string&, std::optional<std::size_t>);
 
 ISPH_INSTANTIATE_FIELD_IO(scalar)
 ISPH_INSTANTIATE_FIELD_IO(label)

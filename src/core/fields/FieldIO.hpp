@@ -6,11 +6,13 @@
 //   binary: N (<N values as raw little-endian bytes>)
 // Binary reads back exactly; ascii to `precision` significant digits (17 is exact).
 // Reading also accepts N(v v v) on one line, an unsized (v v v), N{v} and `uniform v`.
-// Errors name the file, the line and what was expected.
+// Errors name the file, the line and what was expected; a value that is not a finite number
+// (nan, inf, 1e400; ascii or binary) is one.
 #include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/Types.hpp"
@@ -39,6 +41,11 @@ void writeField(const std::filesystem::path& file, const std::vector<T>& values,
 template <class T>
 std::vector<T> readField(const std::filesystem::path& file,
                          std::optional<std::size_t> expectedSize = {});
+
+// readField of the text of a field file already in memory; `fileName` is what errors name.
+template <class T>
+std::vector<T> parseField(std::string_view text, const std::string& fileName,
+                          std::optional<std::size_t> expectedSize = {});
 
 // "scalarField", "labelField", "vectorField", "symmTensorField".
 template <class T>

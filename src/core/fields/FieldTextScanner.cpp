@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
+#include <string>
+
 namespace isph {
 
 FieldTextScanner::FieldTextScanner(std::string_view text, std::size_t pos, int line,
@@ -87,6 +90,17 @@ void FieldTextScanner::expected(std::string_view what) const {
 
 void FieldTextScanner::outOfRange(std::string_view what) const {
   error(fmt::format("expected {}, found {}, which is out of range", what, describeNext()));
+}
+
+void FieldTextScanner::notFinite(std::string_view what) const {
+  error(fmt::format("{} is not a finite number; expected {}", describeNext(), what));
+}
+
+double FieldTextScanner::outOfRangeScalar(std::size_t first, const char* last, std::string_view what) const {
+  const std::string number(text_.data() + first, last);
+  const double v = std::strtod(number.c_str(), nullptr);
+  if (!std::isfinite(v)) notFinite(what);
+  return v;
 }
 
 }  // namespace isph

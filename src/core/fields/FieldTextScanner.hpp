@@ -3,6 +3,7 @@
 // comments, counts lines, reads numbers with std::from_chars (no iostreams), and reports
 // errors at the file, line and column it has reached, saying what was expected.
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -58,6 +59,8 @@ class FieldTextScanner {
   // A whole word (followed by a delimiter).
   bool acceptWord(std::string_view word);
 
+  // A finite number: nan, inf and numbers beyond a double's range (1e400) are errors ("not a
+  // finite number"); one too small for a double (1e-400) reads as the nearest one, as strtod.
   double readScalar(std::string_view what) {
     skipSpace();
     std::size_t p = pos_;
@@ -65,9 +68,13 @@ class FieldTextScanner {
     double v = 0;
     const auto [ptr, ec] = std::from_chars(text_.data() + p, text_.data() + text_.size(), v);
     if (ec != std::errc{} || !delimiterAt(ptr)) {
-      if (ec == std::errc::result_out_of_range && delimiterAt(ptr)) outOfRange(what);
-      expected(what);
+      if (ec == std::errc::result_out_of_range && delimiterAt(ptr)) {
+        v = outOfRangeScalar(p, ptr, what);
+      } else {
+        expected(what);
+      }
     }
+    if (!std::isfinite(v)) notFinite(what);
     pos_ = static_cast<std::size_t>(ptr - text_.data());
     return v;
   }
@@ -109,6 +116,10 @@ class FieldTextScanner {
  private:
   void skipComment();
   [[noreturn]] void outOfRange(std::string_view what) const;
+  [[noreturn]] void notFinite(std::string_view what) const;
+  // The value of the number text_[first, last) that from_chars found out of range: the
+  // nearest double when it is too small, else the "not a finite number" error.
+  double outOfRangeScalar(std::size_t first, const char* last, std::string_view what) const;
   bool delimiterAt(const char* p) const {
     if (p == text_.data() + text_.size()) return true;
     const char c = *p;

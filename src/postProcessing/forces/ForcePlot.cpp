@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/io/ReadFile.hpp"
 #include "core/io/AtomicFile.hpp"
 
 namespace isph {
@@ -30,7 +31,7 @@ struct CsvLayout {
 };
 
 CsvLayout csvLayout(const std::filesystem::path& file) {
-  std::ifstream in(file);
+  std::istringstream in(readFileBytes(file, 64 * 1024));  // the first lines are enough
   std::string line;
   while (std::getline(in, line) && (line.empty() || line[0] == '#')) {
   }

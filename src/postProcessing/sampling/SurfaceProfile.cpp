@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/Error.hpp"
+#include "core/io/ReadFile.hpp"
 
 namespace isph {
 
@@ -60,8 +61,8 @@ double SurfaceProfile::heightAt(double s) const {
 }
 
 std::vector<ProfilePoint> readProfileCsv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) fatalError(fmt::format("cannot read the profile file {}", file.string()));
+  // A regular file of reasonable size (a device such as /dev/zero would never end).
+  std::istringstream in(readWholeFile(file, std::size_t{256} << 20, "a profile file"));
   std::vector<ProfilePoint> out;
   std::string line;
   int lineNo = 0;
@@ -74,7 +75,7 @@ std::vector<ProfilePoint> readProfileCsv(const std::filesystem::path& file) {
     std::replace(text.begin(), text.end(), ',', ' ');
     std::istringstream s(text);
     ProfilePoint p{};
-    if (!(s >> p.x >> p.height)) {
+    if (!(s >> p.x >> p.height) || !std::isfinite(p.x) || !std::isfinite(p.height)) {
       if (out.empty() && !headerSeen) {  // the column names
         headerSeen = true;
         continue;

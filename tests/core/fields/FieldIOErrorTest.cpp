@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "../io/IoTestHelpers.hpp"
 #include "core/fields/FieldIO.hpp"
@@ -74,6 +75,43 @@ TEST(FieldIOErrors, BadScalarAndLabelTokens) {
                 {"expected a label (an integer)", "'1.5'"});
   writeText(id, header("labelField") + "1\n(\n3000000000\n)\n");
   expectErrorAt(expectFatal([&] { readField<label>(id); }), id, 12, {"out of range"});
+}
+
+// nan and inf passed both readers (issue 34): sampleForces then wrote -nan forces with exit 0
+// and the solver failed later without naming a file.
+TEST(FieldIOErrors, NonFiniteAsciiValuesNameFileAndLine) {
+  TempDir tmp;
+  const fs::path p = tmp / "p";
+  for (const std::string bad : {"nan", "-inf", "inf", "Infinity", "1e400", "-1e999", "+nan"}) {
+    writeText(p, header("scalarField") + "3\n(\n1\n" + bad + "\n3\n)\n");
+    expectErrorAt(expectFatal([&] { readField<scalar>(p); }), p, 13,
+                  {"'" + bad + "' is not a finite number", "value 2 of 3"});
+  }
+  const fs::path U = tmp / "U";
+  writeText(U, header("vectorField") + "2\n(\n(0 0 0)\n(1 NAN 0)\n)\n");
+  expectErrorAt(expectFatal([&] { readField<Vec3>(U); }), U, 13, {"'NAN' is not a finite number"});
+  writeText(U, header("vectorField") + "uniform (0 inf 0)\n");
+  expectErrorAt(expectFatal([&] { readField<Vec3>(U, 4); }), U, 10, {"'inf' is not a finite number"});
+  writeText(U, header("vectorField") + "4{(0 0 nan)}\n");
+  expectErrorAt(expectFatal([&] { readField<Vec3>(U); }), U, 10, {"'nan' is not a finite number"});
+  // Too small for a double: the nearest one, as strtod reads it.
+  writeText(p, header("scalarField") + "2(1e-400 -1e-330)\n");
+  EXPECT_EQ(readField<scalar>(p), (std::vector<scalar>{0.0, -0.0}));
+}
+
+TEST(FieldIOErrors, NonFiniteBinaryValuesAreRefused) {
+  TempDir tmp;
+  const fs::path U = tmp / "U";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  writeField(U, std::vector<Vec3>{Vec3(1, 2, 3), Vec3(4, nan, 6)}, {WriteFormat::binary, 6, ""});
+  const auto e = expectFatal([&] { readField<Vec3>(U); });
+  EXPECT_EQ(*e.where().file, U.string());
+  EXPECT_GT(e.where().line, 0);
+  EXPECT_TRUE(contains(e.report(), "value 2 of 2 (component 2")) << e.report();
+  EXPECT_TRUE(contains(e.report(), "is not a finite number (nan) in the binary data")) << e.report();
+  const fs::path p = tmp / "p";
+  writeField(p, std::vector<scalar>{1, std::numeric_limits<double>::infinity()}, {WriteFormat::binary, 6, ""});
+  EXPECT_TRUE(contains(expectFatal([&] { readField<scalar>(p); }).report(), "(inf)"));
 }
 
 TEST(FieldIOErrors, ClassMismatch) {
