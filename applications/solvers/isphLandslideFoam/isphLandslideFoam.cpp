@@ -29,6 +29,7 @@ const isph::ApplicationSpec spec{
     .description = "Incompressible SPH (projection method) for flow-like landslides and fluids.",
     .options = {},
     .arguments = {},
+    .recovery = isph::CaseRecovery::allHosts,
 };
 
 void run(const isph::ArgList& args) {

@@ -22,6 +22,7 @@ const isph::ApplicationSpec spec{
                 {"keywords", "", "list the keywords of the dictionary or of the -entry sub-dictionary"}},
     .arguments = {"file"},
     .banner = false,
+    .recovery = isph::CaseRecovery::none,
 };
 
 std::vector<std::string> splitPath(const std::string& path) {

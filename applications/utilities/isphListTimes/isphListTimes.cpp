@@ -6,6 +6,7 @@
 
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "core/io/AtomicFile.hpp"
 
 namespace {
 
@@ -22,7 +23,7 @@ void run(const isph::ArgList& args) {
   for (const auto& t : isph::selectedTimes(args)) {
     if (args.found("rm")) {
       if (t.value == 0 && !args.option("time")) continue;
-      std::filesystem::remove_all(args.casePath() / t.name);
+      isph::removeDirectoryAtomically(args.casePath() / t.name);  // out of view first
     } else {
       std::cout << t.name << '\n';
     }

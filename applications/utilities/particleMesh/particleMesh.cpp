@@ -32,6 +32,7 @@ const isph::ApplicationSpec spec{
     .arguments = {},
     .timeOptions = false,
     .banner = true,
+    .recovery = isph::CaseRecovery::allHosts,
 };
 
 // writeFormat and writePrecision of system/controlDict when the case has one (the only

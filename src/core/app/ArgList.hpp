@@ -15,6 +15,15 @@ struct OptionSpec {
   std::string help;
 };
 
+// What an application restores or clears at start of what interrupted writes, replaces and
+// purges left in the case (StagingRecovery.hpp).
+enum class CaseRecovery {
+  none,      // the application reads no case (isphDictionary reads a file)
+  thisHost,  // leftovers of processes of this host that are gone
+  allHosts,  // also those of other hosts: the applications that write time directories (the
+             // solver, particleMesh), of which one runs on a case at a time
+};
+
 struct ApplicationSpec {
   std::string name;
   std::string description;
@@ -22,6 +31,7 @@ struct ApplicationSpec {
   std::vector<std::string> arguments;         // positional arguments, by name (all required)
   bool timeOptions = false;                   // -time, -latestTime, -noZero
   bool banner = true;                         // false for tools whose output is parsed
+  CaseRecovery recovery = CaseRecovery::thisHost;
 };
 
 // Thrown by the parser for -help: the application prints usage and exits 0.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "core/io/StagingNames.hpp"
 
 namespace isph {
 
@@ -88,28 +89,14 @@ void fsyncTree(const fs::path& dir) {
   fsyncPath(dir, true);
 }
 
-// The <name> of ".<name>.<kind>.<pid...>", or "" when `entry` is not a staging name of that kind.
-std::string stagedTargetName(const std::string& entry, std::string_view kind) {
-  if (entry.size() < 2 || entry[0] != '.') return {};
-  const std::string marker = fmt::format(".{}.", kind);
-  const auto pos = entry.rfind(marker);
-  if (pos == std::string::npos || pos < 2) return {};
-  return entry.substr(1, pos - 1);
-}
-
 }  // namespace
 
 namespace detail {
 
-fs::path stagingName(const fs::path& target, std::string_view kind) {
-  const fs::path t = withoutTrailingSlash(target);
-  return t.parent_path() / fmt::format(".{}.{}.{}", t.filename().string(), kind, ::getpid());
-}
-
 fs::path writeStagingFile(const fs::path& file, std::string_view content) {
   // A per-process counter keeps two threads writing the same file apart.
   static std::atomic<unsigned> counter{0};
-  const fs::path tmp = fs::path(stagingName(file, "tmp").string() + fmt::format(".{}", counter++));
+  const fs::path tmp = stagingName(file, "tmp", counter++);
 
   Fd fd(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
   if (fd.get() < 0) {
@@ -158,7 +145,7 @@ void writeFileAtomic(const fs::path& file, std::string_view content) {
 
 StagedDirectory::StagedDirectory(fs::path target)
     : target_(withoutTrailingSlash(std::move(target))),
-      staging_(detail::stagingName(target_, "tmp")) {
+      staging_(stagingName(target_, "tmp")) {
   if (target_.filename().empty() || target_.filename() == "." || target_.filename() == "..") {
     fatalError(fmt::format("cannot stage directory {}: it has no name", target_.string()));
   }
@@ -176,7 +163,7 @@ StagedDirectory::StagedDirectory(fs::path target)
 StagedDirectory::~StagedDirectory() {
   if (!committed_) {
     std::error_code ec;
-    fs::remove_all(staging_, ec);  // best effort; removeStaleStaging catches what remains
+    fs::remove_all(staging_, ec);  // best effort; recoverStaging clears what remains
   }
 }
 
@@ -190,7 +177,7 @@ void StagedDirectory::commit() {
 
   std::error_code ec;
   const bool replacing = fs::exists(fs::symlink_status(target_, ec));
-  const fs::path aside = detail::stagingName(target_, "old");
+  const fs::path aside = stagingName(target_, "old");
   if (replacing) {
     fs::remove_all(aside, ec);
     renameOrFail(target_, aside);
@@ -211,38 +198,19 @@ void StagedDirectory::commit() {
   }
 }
 
-// ---- cleanup --------------------------------------------------------------------------
+// ---- removal ---------------------------------------------------------------------------
 
-int removeStaleStaging(const fs::path& dir) {
+void syncDirectory(const fs::path& dir) { fsyncPath(dir, true); }
+
+void removeDirectoryAtomically(const fs::path& dir) {
+  const fs::path target = withoutTrailingSlash(dir);
+  const fs::path trash = stagingName(target, "trash");
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return 0;
-
-  std::vector<fs::path> tmp, old;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (!stagedTargetName(name, "tmp").empty()) tmp.push_back(it->path());
-    if (!stagedTargetName(name, "old").empty()) old.push_back(it->path());
-  }
-  if (ec) fatalError(fmt::format("cannot list {}: {}", dir.string(), ec.message()));
-
-  int n = 0;
-  for (const auto& p : old) {
-    const fs::path original = dir / stagedTargetName(p.filename().string(), "old");
-    if (!fs::exists(fs::symlink_status(original, ec))) {
-      renameOrFail(p, original);  // a commit died between its renames: keep the committed one
-    } else {
-      fs::remove_all(p, ec);
-      if (ec) fatalError(fmt::format("cannot remove {}: {}", p.string(), ec.message()));
-    }
-    ++n;
-  }
-  for (const auto& p : tmp) {
-    fs::remove_all(p, ec);
-    if (ec) fatalError(fmt::format("cannot remove {}: {}", p.string(), ec.message()));
-    ++n;
-  }
-  if (!old.empty()) fsyncPath(dir, true);
-  return n;
+  fs::remove_all(trash, ec);  // a leftover of this pid
+  renameOrFail(target, trash);
+  fsyncPath(folderOf(target), true);
+  fs::remove_all(trash, ec);
+  if (ec) fatalError(fmt::format("cannot remove {} (renamed to {} for it): {}", target.string(), trash.string(), ec.message()));
 }
 
 }  // namespace isph

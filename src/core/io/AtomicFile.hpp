@@ -1,25 +1,28 @@
 #pragma once
 // Crash-safe output: files and whole directories (a time directory) are written under a
 // hidden temporary name, flushed to disk and published with one rename, so that a reader
-// or a restart sees the old content or the new one, never a half-written one.
+// or a restart sees the old content or the new one, never a half-written one; a directory is
+// removed by renaming it out of view first. Hidden names: StagingNames.hpp.
 //
 // What remains if the process dies (or the machine loses power) at each point:
 //  writeFileAtomic
-//   - while writing or syncing the temporary ".<name>.tmp.<pid>": the target is untouched;
-//     a hidden temporary file remains (removeStaleStaging deletes it).
+//   - while writing or syncing the temporary ".<name>.tmp.<pid>.<n>@<host>": the target is
+//     untouched; a hidden temporary file remains.
 //   - after the rename: the new file is complete (its data was fsync'ed before the rename).
 //  StagedDirectory
-//   - before commit(): only the hidden staging directory ".<name>.tmp.<pid>" exists; the
-//     target (if any) is untouched.
-//   - in commit(), between renaming an existing target aside (".<name>.old.<pid>") and
+//   - before commit(): only the hidden staging directory ".<name>.tmp.<pid>@<host>" exists;
+//     the target (if any) is untouched.
+//   - in commit(), between renaming an existing target aside (".<name>.old.<pid>@<host>") and
 //     renaming the staging directory in: the target name is briefly absent; the previous,
-//     complete content is under ".<name>.old.<pid>" and the new, complete content under
-//     ".<name>.tmp.<pid>". removeStaleStaging renames such an orphaned ".old." back to
-//     <name> (it was a committed directory) and deletes the ".tmp.".
+//     complete content is under ".old." and the new, complete content under ".tmp.".
 //   - after the rename-in, while the ".old." is being deleted: the target is new and
-//     complete; removeStaleStaging deletes what is left of the ".old.".
-// Every staging name starts with '.', so listings that skip hidden entries (the time
-// directory scan) never see them.
+//     complete; what is left of the ".old." remains.
+//  removeDirectoryAtomically
+//   - after the rename to ".<name>.trash.<pid>@<host>": the directory is out of view (a time
+//     listing no longer has it) while its content is being deleted.
+// recoverStaging (StagingRecovery.hpp), which every application runs at start, renames an
+// orphaned ".old." back to <name> and deletes the rest. Every staging name starts with '.',
+// so listings that skip hidden entries (the time directory scan) never see them.
 #include <filesystem>
 #include <string_view>
 
@@ -51,20 +54,22 @@ class StagedDirectory {
   bool committed_ = false;
 };
 
-// Remove leftovers of interrupted runs (".*.tmp.*" and ".*.old.*" entries) in `dir`; returns how
-// many. An ".<name>.old.<pid>" directory whose <name> is missing (a commit interrupted between
-// its two renames) is renamed back to <name> instead, and counted too. Call it at start-up,
-// while no other process writes into `dir`. A missing `dir` gives 0.
-int removeStaleStaging(const std::filesystem::path& dir);
+// Remove the directory `dir` (a time directory purged by purgeWrite) crash-safely: it is
+// first renamed to the hidden ".<name>.trash.<pid>@<host>" (and the folder flushed), then
+// deleted; a kill during the deletion leaves nothing that looks like a time. FatalError if it
+// cannot be renamed or deleted.
+void removeDirectoryAtomically(const std::filesystem::path& dir);
+
+// fsync a directory (after renames in it); a file system that cannot is ignored.
+void syncDirectory(const std::filesystem::path& dir);
 
 namespace detail {
 // The two halves of writeFileAtomic, separate so that tests can stop in between.
-// Writes and fsyncs `content` to the hidden ".<name>.tmp.<pid>.<n>" next to `file`; returns it.
+// Writes and fsyncs `content` to the hidden ".<name>.tmp.<pid>.<n>@<host>" next to `file`;
+// returns it.
 std::filesystem::path writeStagingFile(const std::filesystem::path& file, std::string_view content);
 // Renames `staged` over `file` and fsyncs the folder.
 void publishStagingFile(const std::filesystem::path& staged, const std::filesystem::path& file);
-// ".<name>.<kind>.<pid>" next to `target` (kind "tmp" or "old").
-std::filesystem::path stagingName(const std::filesystem::path& target, std::string_view kind);
 }  // namespace detail
 
 }  // namespace isph

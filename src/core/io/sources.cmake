@@ -3,4 +3,6 @@ target_sources(isphCore PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/AtomicFile.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FoamFileHeader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ReadFile.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/StagingNames.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/StagingRecovery.cpp
 )

@@ -236,11 +236,12 @@ void Time::purgeOldWrites() {
   if (settings_.purgeWrite <= 0 || !writeTime_ || name_ == startName_) return;
   if (writtenTimes_.empty() || writtenTimes_.back() != name_) writtenTimes_.push_back(name_);
   while (writtenTimes_.size() > static_cast<std::size_t>(settings_.purgeWrite)) {
-    std::error_code ec;
-    fs::remove_all(caseDir_ / writtenTimes_.front(), ec);
-    if (ec)
-      warning(fmt::format("purgeWrite: cannot remove {}: {}",
-                          (caseDir_ / writtenTimes_.front()).string(), ec.message()));
+    // Out of view first (a hidden name), then deleted: a kill meanwhile leaves no half time.
+    try {
+      removeDirectoryAtomically(caseDir_ / writtenTimes_.front());
+    } catch (const FatalError& e) {
+      warning(fmt::format("purgeWrite: {}", e.what()));
+    }
     writtenTimes_.pop_front();
   }
 }

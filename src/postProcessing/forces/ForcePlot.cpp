@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/io/ReadFile.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StagingNames.hpp"
 
 namespace isph {
 
@@ -90,10 +91,10 @@ void plotForces(const ForceSet& set, const ForceTable& table, const ForcePlotFil
                                         set.name, files.reference.string()));
   }
   // gnuplot draws into a hidden temporary file, renamed over the PNG once complete.
-  const auto tmpPng = detail::stagingName(files.png, "tmp");
+  const auto tmpPng = stagingName(files.png, "tmp");
   ForcePlotFiles staged = files;
   staged.png = tmpPng;
-  const auto script = detail::stagingName(files.png.parent_path() / (set.name + ".gnuplot"), "tmp");
+  const auto script = stagingName(files.png.parent_path() / (set.name + ".gnuplot"), "tmp");
   {
     std::ofstream out(script);
     out << forcePlotScript(set, table, staged);

@@ -7,6 +7,7 @@
 
 #include "IoTestHelpers.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StagingRecovery.hpp"
 
 namespace isph {
 namespace {
@@ -62,7 +63,7 @@ TEST(AtomicFile, InterruptedBeforeRenameLeavesTheOldFile) {
   EXPECT_EQ(readText(staged), "new content");
   EXPECT_EQ(readText(file), "old content");  // what a restart would see if the run died now
   // A restart clears the leftover and keeps the old file.
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 1);
+  EXPECT_EQ(recoverStaging(tmp.path()).removed, 1);
   EXPECT_FALSE(fs::exists(staged));
   EXPECT_EQ(readText(file), "old content");
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the io and fields tests: a temporary folder, file text, error capture.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -49,6 +50,16 @@ inline std::string readText(const std::filesystem::path& file) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// The id of a process that has ended (a child that exited at once): a leftover named with it is
+// one of a process that is gone.
+inline long deadPid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return static_cast<long>(pid);
 }
 
 // Runs `f`, expects a FatalError and returns it (fails the test if none is thrown).

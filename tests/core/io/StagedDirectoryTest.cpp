@@ -1,20 +1,30 @@
-// StagedDirectory: a directory appears whole on commit() or not at all; removeStaleStaging
+// StagedDirectory: a directory appears whole on commit() or not at all; recoverStaging
 // clears (or restores) what an interrupted run left.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "IoTestHelpers.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "core/io/StagingNames.hpp"
+#include "core/io/StagingRecovery.hpp"
 
 namespace isph {
 namespace {
 
 using iotest::contains;
+using iotest::deadPid;
 using iotest::expectFatal;
 using iotest::readText;
 using iotest::TempDir;
 using iotest::writeText;
 
 namespace fs = std::filesystem;
+
+// What recoverStaging restored and removed in `dir`.
+int recovered(const fs::path& dir) {
+  const StagingRecovery r = recoverStaging(dir);
+  return r.restored + r.removed;
+}
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -70,13 +80,13 @@ TEST(StagedDirectory, KilledBeforeCommitLeavesOnlyAHiddenDirectory) {
   const fs::path target = tmp / "0.1";
   writeText(target / "U", "previous");
   // What a killed process leaves: its staging directory (destructor never ran).
-  const fs::path leftover = detail::stagingName(target, "tmp");
+  const fs::path leftover = stagingName(target, "tmp");
   writeText(leftover / "U", "half");
-  writeText(tmp / ".0.2.tmp.99999/U", "half");
+  writeText(tmp / fmt::format(".0.2.tmp.{}/U", deadPid()), "half");
   for (const auto& name : entries(tmp.path())) {
     EXPECT_TRUE(name == "0.1" || name[0] == '.') << name;  // a time listing sees only 0.1
   }
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 2);
+  EXPECT_EQ(recovered(tmp.path()), 2);
   EXPECT_EQ(entries(tmp.path()), std::vector<std::string>{"0.1"});
   EXPECT_EQ(readText(target / "U"), "previous");
 }
@@ -113,9 +123,10 @@ TEST(StagedDirectory, CannotCreateIsAFatalErrorNamingThePath) {
 TEST(StagedDirectory, RestartRestoresADirectoryCaughtBetweenTheTwoRenames) {
   // Killed in commit() after moving the old 0.1 aside and before moving the new one in.
   TempDir tmp;
-  writeText(tmp / ".0.1.old.4242/U", "committed");
-  writeText(tmp / ".0.1.tmp.4242/U", "new");
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 2);
+  const long pid = deadPid();
+  writeText(tmp / fmt::format(".0.1.old.{}/U", pid), "committed");
+  writeText(tmp / fmt::format(".0.1.tmp.{}/U", pid), "new");
+  EXPECT_EQ(recovered(tmp.path()), 2);
   EXPECT_EQ(entries(tmp.path()), std::vector<std::string>{"0.1"});
   EXPECT_EQ(readText(tmp / "0.1/U"), "committed");
 }
@@ -124,22 +135,22 @@ TEST(StagedDirectory, RestartRemovesAnOldDirectoryWhoseReplacementIsInPlace) {
   // Killed in commit() after the new 0.1 was in place, while the old one was being removed.
   TempDir tmp;
   writeText(tmp / "0.1/U", "new");
-  writeText(tmp / ".0.1.old.4242/U", "old");
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 1);
+  writeText(tmp / fmt::format(".0.1.old.{}/U", deadPid()), "old");
+  EXPECT_EQ(recovered(tmp.path()), 1);
   EXPECT_EQ(entries(tmp.path()), std::vector<std::string>{"0.1"});
   EXPECT_EQ(readText(tmp / "0.1/U"), "new");
 }
 
-TEST(RemoveStaleStaging, LeavesOtherEntriesAlone) {
+TEST(RecoverStaging, LeavesOtherEntriesAlone) {
   TempDir tmp;
   writeText(tmp / "0.1/U", "x");
   writeText(tmp / ".hidden", "x");          // hidden, but not a staging name
   writeText(tmp / "notes.tmp.txt", "x");    // not hidden
-  writeText(tmp / ".U.tmp.123.0", "half");  // a leftover writeFileAtomic temporary
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 1);
+  writeText(tmp / fmt::format(".U.tmp.{}.0", deadPid()), "half");  // a writeFileAtomic temporary
+  EXPECT_EQ(recovered(tmp.path()), 1);
   EXPECT_EQ(entries(tmp.path()), (std::vector<std::string>{".hidden", "0.1", "notes.tmp.txt"}));
-  EXPECT_EQ(removeStaleStaging(tmp.path()), 0);
-  EXPECT_EQ(removeStaleStaging(tmp / "doesNotExist"), 0);
+  EXPECT_EQ(recovered(tmp.path()), 0);
+  EXPECT_EQ(recovered(tmp / "doesNotExist"), 0);
 }
 
 }  // namespace

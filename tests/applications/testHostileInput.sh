@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The probes of issue 34 as a careful user's mistakes and a crashing machine would make them,
+# each run against the applications: none may crash (exit 134/139), hang or lose a time
+# directory; each bad input is a clear error (file, line, limit) with exit status 1.
+# Usage: testHostileInput.sh <source dir> <build dir>
+set -u
+src=$1
+bin=$2/bin
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 fails=0
+check() {  # check <description> <command...>: the command must succeed
+  local what=$1; shift
+  if "$@"; then echo "PASS: $what"; passed=$((passed + 1)); else echo "FAIL: $what"; fails=$((fails + 1)); fi
+}
+has() { grep -q -- "$1" <<< "$2"; }  # has <text> <output>
+deadPid() { sh -c 'echo $$'; }       # a process that has ended
+
+# ---- dictionaries ----------------------------------------------------------------------
+python3 -c "print('a { ' * 10000 + '} ' * 10000)" > "$work/deep"
+out=$("$bin/isphDictionary" "$work/deep" 2>&1); rc=$?
+check "10,000 nested dictionaries: exit 1, not a crash" test "$rc" -eq 1
+check "... naming the limit" has "nested more than 100 levels" "$out"
+printf 'a 1;\n#include "/dev/zero"\n' > "$work/zero"
+out=$(timeout 60 "$bin/isphDictionary" "$work/zero" 2>&1); rc=$?
+check "#include \"/dev/zero\": exit 1 at once" test "$rc" -eq 1
+check "... naming the file, line and why" has "zero, line 2" "$out"
+check "... a character device" has "a character device, not a regular file" "$out"
+
+# ---- interrupted writes, replaces and purges -------------------------------------------
+c=$work/case
+mkdir -p "$c/system" "$c/0/lagrangian/particles" "$c/0.1/lagrangian/particles"
+printf 'FoamFile { class dictionary; object controlDict; }\nendTime 1;\n' > "$c/system/controlDict"
+pid=$(deadPid)
+mkdir -p "$c/.0.2.old.$pid/lagrangian/particles" "$c/.0.2.tmp.$pid/lagrangian" "$c/.0.3.tmp.$pid" \
+    "$c/.0.05.trash.$pid/lagrangian/particles" "$c/postProcessing/x"
+echo complete > "$c/.0.2.old.$pid/lagrangian/particles/U"
+echo half > "$c/postProcessing/x/.f.dat.tmp.$pid.0"
+out=$("$bin/isphListTimes" -case "$c" 2>"$work/err"); rc=$?
+err=$(cat "$work/err")
+check "a time hidden by a replace killed between its renames is restored" test "$out" = "$(printf '0\n0.1\n0.2')"
+check "... with its complete content" grep -q complete "$c/0.2/lagrangian/particles/U"
+check "... and said (on stderr, as isphListTimes' stdout is parsed)" has "restored $c/0.2" "$err"
+check "the unfinished writes and the purge's rest are removed" \
+    bash -c "[ -z \"\$(ls -A '$c' | grep '^\\.')\" ] && [ -z \"\$(ls -A '$c/postProcessing/x')\" ]"
+check "... and said" has "1 restored, 4 removed, 0 left alone" "$err"
+sleep 300 & running=$!
+mkdir -p "$c/.0.4.tmp.$running"
+out=$("$bin/isphListTimes" -case "$c" 2>"$work/err")
+check "the staging of a running process is left alone" test -d "$c/.0.4.tmp.$running"
+check "... and said" has "process $running may still be writing it" "$(cat "$work/err")"
+kill "$running"; wait "$running" 2>/dev/null
+"$bin/isphListTimes" -case "$c" -time 0.1 -rm 2>/dev/null
+check "isphListTimes -rm removes a time and leaves nothing behind" \
+    bash -c "[ ! -e '$c/0.1' ] && [ -z \"\$(ls -A '$c' | grep '^\\.0\\.1')\" ]"
+
+echo "$passed passed, $fails failed"
+[ "$fails" -eq 0 ]
