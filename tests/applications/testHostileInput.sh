@@ -54,5 +54,29 @@ kill "$running"; wait "$running" 2>/dev/null
 check "isphListTimes -rm removes a time and leaves nothing behind" \
     bash -c "[ ! -e '$c/0.1' ] && [ -z \"\$(ls -A '$c' | grep '^\\.0\\.1')\" ]"
 
+# ---- post-processing over incomplete or damaged times -----------------------------------
+t=$work/tank
+cp -r "$src/tests/postProcessing/cases/hydrostaticTank" "$t"
+sed -i 's/^spacing .*/spacing 0.05;/' "$t/system/particleMeshDict"
+"$bin/particleMesh" -case "$t" > "$work/log.particleMesh" 2>&1 || { cat "$work/log.particleMesh"; exit 1; }
+for time in 0.1 0.2 0.3; do cp -r "$t/0" "$t/$time"; done
+rm "$t/0.1/lagrangian/particles/U"                                 # half-deleted
+awk 'NR == 25 { $0 = "nan" } { print }' "$t/0/lagrangian/particles/p" > "$t/0.2/lagrangian/particles/p"
+pLine=$(awk 'NR == 25' "$t/0.2/lagrangian/particles/p")
+"$bin/toVTK" -case "$t" > "$work/log.toVTK" 2>&1; rc=$?
+check "toVTK goes past an incomplete time and a nan: exit 0" test "$rc" -eq 0
+check "... the .pvd lists the readable times" \
+    bash -c "[ \"\$(grep -c 'DataSet' '$t/VTK/tank.pvd')\" -eq 2 ] && ! grep -q '_0.1.vtp\|_0.2.vtp' '$t/VTK/tank.pvd'"
+check "... warns naming the missing file" has "time 0.1 is skipped" "$(cat "$work/log.toVTK")"
+check "... and the nan with its file and line" has "0.2/lagrangian/particles/p, line 25" "$(cat "$work/log.toVTK")"
+check "... not a finite number" has "'nan' is not a finite number" "$(cat "$work/log.toVTK")"
+check "... and counts the skipped" has "2 of 4 selected times were skipped" "$(cat "$work/log.toVTK")"
+"$bin/sampleForces" -case "$t" > "$work/log.sampleForces" 2>&1; rc=$?
+check "sampleForces skips them too (exit 0)" test "$rc" -eq 0
+check "... no nan in the forces" bash -c "! grep -qi nan '$t/postProcessing/sampleForces/0/leftWall.dat'"
+out=$("$bin/sampleForces" -case "$t" -time 0.2 2>&1); rc=$?
+check "sampleForces on the nan time alone: exit 1" test "$rc" -eq 1
+check "... naming the file and line" has "0.2/lagrangian/particles/p, line 25" "$out"
+
 echo "$passed passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -7,6 +7,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
@@ -28,6 +29,13 @@ const isph::ApplicationSpec spec{
     .timeOptions = true,
 };
 
+// What the forces of one time are computed from.
+struct TimeState {
+  isph::ParticleCloud cloud;
+  std::optional<std::vector<isph::Vec3>> friction;
+  std::optional<std::vector<isph::SymmTensor>> tau;
+};
+
 // The kernel that carries τ to the walls: the solver's (system/isphSchemes) when the case has one.
 std::unique_ptr<isph::Kernel> kernelFor(const fs::path& casePath, const isph::CloudProperties& props) {
   const fs::path schemes = casePath / "system" / "isphSchemes";
@@ -46,14 +54,20 @@ void run(const isph::ArgList& args) {
   std::vector<isph::ForceTable> tables;
   std::vector<std::string> text(sets.size());
   std::unique_ptr<isph::Kernel> kernel;
+  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
     isph::info("Time = {}", time.name);
     const fs::path timeDir = args.casePath() / time.name;
-    const isph::ParticleCloud cloud = isph::readCloud(timeDir, cloudName);
     // A material that slides on the walls (the solver wrote its wall friction) exchanges no τ
     // with them (PatchForces.hpp): τ is read only for one that does not.
-    const auto friction = isph::readWallFriction(timeDir, cloudName, cloud.size());
-    const auto tau = friction ? std::nullopt : isph::readDeviatoricStress(timeDir, cloudName, cloud.size());
+    const auto state = skipped.read(time, [&] {
+      TimeState s{isph::readCloud(timeDir, cloudName), std::nullopt, std::nullopt};
+      s.friction = isph::readWallFriction(timeDir, cloudName, s.cloud.size());
+      if (!s.friction) s.tau = isph::readDeviatoricStress(timeDir, cloudName, s.cloud.size());
+      return s;
+    });
+    if (!state) continue;
+    const auto& [cloud, friction, tau] = *state;
     if (tau && !kernel) kernel = kernelFor(args.casePath(), cloud.properties);
     const auto forces = isph::setForces({.cloud = cloud,
                                          .sets = sets,
@@ -75,6 +89,7 @@ void run(const isph::ArgList& args) {
     }
   }
 
+  skipped.finish(times.size());
   const fs::path outDir = args.casePath() / "postProcessing" / "sampleForces" / times.front().name;
   fs::create_directories(outDir);
   for (std::size_t s = 0; s < sets.size(); ++s) {

@@ -22,6 +22,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
@@ -78,14 +79,17 @@ void run(const isph::ArgList& args) {
   text += fmt::format("# spread over {} < x < {}, depth > {} m, in units of rho |g| H, H = {} m; displacement from time {}\n",
                       s.xMin, s.xMax, s.minDepth, s.height, referenceName);
   text += "# Time[s] l2[-] spread[-] maxDisplacement[m]\n";
+  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
-    const isph::LithostaticError e = isph::lithostaticError(cloud, s);
-    const double moved = isph::largestDisplacement(start, cloud);
+    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    if (!cloud) continue;
+    const isph::LithostaticError e = isph::lithostaticError(*cloud, s);
+    const double moved = isph::largestDisplacement(start, *cloud);
     isph::info("Time = {}  l2 {:.6g}  spread {:.6g}  maxDisplacement {:.6g} m  ({} interior particles)", time.name, e.l2,
                e.spread, moved, e.interior);
     text += fmt::format("{} {:.8g} {:.8g} {:.8g}\n", time.value, e.l2, e.spread, moved);
   }
+  skipped.finish(times.size());
   const fs::path out = args.casePath() / "postProcessing" / "sampleLithostatic" / times.front().name / "lithostatic.dat";
   fs::create_directories(out.parent_path());
   isph::writeFileAtomic(out, text);

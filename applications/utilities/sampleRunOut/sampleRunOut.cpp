@@ -14,6 +14,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
@@ -50,9 +51,11 @@ void run(const isph::ArgList& args) {
   std::string text = "# run-out along (" + fmt::format("{} {} {}", s.direction.x(), s.direction.y(), s.direction.z()) +
                      ") from (" + fmt::format("{} {} {}", s.origin.x(), s.origin.y(), s.origin.z()) + ")\n" +
                      "# Time[s] runOut[m]\n";
+  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
-    const auto front = isph::runOut(cloud, s);
+    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    if (!cloud) continue;
+    const auto front = isph::runOut(*cloud, s);
     if (!front) {
       isph::warning(fmt::format("time {}: no material particle within maxHeight of the bed line", time.name));
       continue;
@@ -60,6 +63,7 @@ void run(const isph::ArgList& args) {
     isph::info("Time = {}  runOut {:.6g} m", time.name, *front);
     text += fmt::format("{} {:.8g}\n", time.value, *front);
   }
+  skipped.finish(times.size());
   const fs::path out = args.casePath() / "postProcessing" / "sampleRunOut" / times.front().name / "runOut.dat";
   fs::create_directories(out.parent_path());
   isph::writeFileAtomic(out, text);

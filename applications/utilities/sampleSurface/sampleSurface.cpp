@@ -19,6 +19,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
@@ -57,9 +58,11 @@ void run(const isph::ArgList& args) {
 
   const std::string cloudName = args.option("cloud").value_or("particles");
   const auto times = isph::selectedTimes(args);
+  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
-    const isph::SurfaceProfile profile = isph::surfaceProfile(cloud, s);
+    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    if (!cloud) continue;
+    const isph::SurfaceProfile profile = isph::surfaceProfile(*cloud, s);
     std::string text = fmt::format("# free surface at time {}: highest material particle centre + dx/2 per bin\n", time.name);
     text += fmt::format("# bins of {} m along ({} {} {}) from ({} {} {}); height 0 where a bin has no material\n",
                         s.binWidth, s.direction.x(), s.direction.y(), s.direction.z(), s.origin.x(), s.origin.y(),
@@ -78,6 +81,7 @@ void run(const isph::ArgList& args) {
     isph::writeFileAtomic(out, text);
     isph::info("Written {}", out.string());
   }
+  skipped.finish(times.size());
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "postProcessing/vtk/CloudPolyData.hpp"
@@ -49,9 +50,11 @@ void run(const isph::ArgList& args) {
   fs::create_directories(vtkDir);
 
   std::vector<isph::PvdEntry> converted;
+  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const auto cloud = isph::readCloudFields(args.casePath() / time.name, cloudName, fields);
-    const auto poly = isph::cloudPolyData(cloud, time.value, {.noWalls = args.found("noWalls")});
+    const auto cloud = skipped.read(time, [&] { return isph::readCloudFields(args.casePath() / time.name, cloudName, fields); });
+    if (!cloud) continue;
+    const auto poly = isph::cloudPolyData(*cloud, time.value, {.noWalls = args.found("noWalls")});
     const std::string file = args.caseName() + "_" + time.name + ".vtp";
     isph::writeVtp(poly, vtkDir / file, format);
     isph::info("Time = {}: {} particles, {} point fields -> VTK/{}", time.name, poly->GetNumberOfPoints(),
@@ -59,8 +62,11 @@ void run(const isph::ArgList& args) {
     converted.push_back({time.name, file});
   }
   const fs::path pvd = vtkDir / (args.caseName() + ".pvd");
-  const auto all = isph::updatePvd(pvd, converted);
-  isph::info("\nWritten {} ({} times)", pvd.string(), all.size());
+  if (!converted.empty()) {
+    const auto all = isph::updatePvd(pvd, converted);
+    isph::info("\nWritten {} ({} times)", pvd.string(), all.size());
+  }
+  skipped.finish(times.size());
 }
 
 }  // namespace
