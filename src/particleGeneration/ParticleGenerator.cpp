@@ -4,7 +4,9 @@
 
 #include <algorithm>
 
+#include "core/app/OutOfMemory.hpp"
 #include "particleGeneration/LithostaticPressure.hpp"
+#include "particleGeneration/ParticleEstimate.hpp"
 #include "particleGeneration/RegionFilling.hpp"
 #include "particleGeneration/SpatialHash.hpp"
 #include "particleGeneration/WallClearance.hpp"
@@ -70,15 +72,26 @@ void closestPair(const std::vector<Vec2>& material, const std::vector<double>& n
 GenerationResult generateParticles(const Scene& scene) {
   const double dx = scene.spacing;
   const Lattice lattice(scene.lattice, dx, scene.latticeOrigin);
+  const ParticleEstimate estimate = estimateParticles(scene);
+  checkParticleEstimate(scene, estimate);  // before anything is allocated
 
   std::vector<const Region*> shapes;
   for (const RegionSpec& r : scene.regions) shapes.push_back(r.shape.get());
-  std::vector<RegionSites> sites = fillRegions(shapes, lattice);
+  std::vector<RegionSites> sites;
+  {
+    const Building building(fmt::format("the material particles of {} region(s) at spacing {} m (about {:.3g} "
+                                        "particles, {:.3g} lattice sites tested)",
+                                        scene.regions.size(), dx, estimate.material, estimate.tested));
+    sites = fillRegions(shapes, lattice);
+  }
   checkRegionsHoldSites(scene, sites, lattice);
 
   std::vector<WallSide> sides;
   const std::vector<WallSurface> walls =
       orientWalls(scene.walls, shapes, dx, scene.wallLayers * dx, sides);
+  const Building building(fmt::format("the particle cloud at spacing {} m (about {:.3g} particles: {:.3g} material, "
+                                      "{:.3g} wall and dummy)",
+                                      dx, estimate.particles(), estimate.material, estimate.walls));
   const WallLayerResult wallLayers = generateWallLayers(walls, scene.wallLayers, dx);
 
   GenerationResult result;

@@ -38,6 +38,8 @@ struct WallSpec {
 
 struct Scene {
   double spacing = 0;  // dx [m]
+  double maxParticles = 1e7;  // refused above (ParticleEstimate.hpp): a spacing typo, not a scene
+  SourceLocation spacingWhere, maxParticlesWhere;  // the entries (for errors); unknown if built by code
   std::string cloudName = "particles";
   int dimension = 2;
   LatticeType lattice = LatticeType::square;

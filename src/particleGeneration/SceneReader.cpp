@@ -37,6 +37,11 @@ void readLattice(const Dictionary& dict, Scene& scene) {
   scene.spacing = dict.get<double>("spacing");
   if (!(scene.spacing > 0))
     invalid(dict, "spacing", fmt::format("must be positive, found {}", scene.spacing));
+  scene.spacingWhere = dict.findEntry("spacing")->location();
+  scene.maxParticles = dict.getOrDefault("maxParticles", scene.maxParticles);
+  if (!(scene.maxParticles >= 1))
+    invalid(dict, "maxParticles", fmt::format("must be at least 1, found {}", scene.maxParticles));
+  if (const Entry* e = dict.findEntry("maxParticles")) scene.maxParticlesWhere = e->location();
   scene.cloudName = dict.getOrDefault<std::string>("cloud", "particles");
   scene.dimension = dict.getOrDefault<int>("dimension", 2);
   if (scene.dimension != 2) {

@@ -3,6 +3,8 @@
 // are (x y 0) in the scene frame (plane strain, z = 0); `transform` maps them to the case.
 //
 //   spacing         0.0036;      // dx [m]; required, > 0
+//   maxParticles    1e7;         // a scene estimated to make more is refused before any is
+//                                // made (ParticleEstimate.hpp); raise it for a larger one
 //   cloud           particles;   // the cloud's name: 0/lagrangian/<cloud>
 //   dimension       2;           // plane strain in x-y (3D is not available yet)
 //   lattice         square;      // square (dx²) | hexagonal ((√3/2) dx² per site)

@@ -27,6 +27,29 @@ check "#include \"/dev/zero\": exit 1 at once" test "$rc" -eq 1
 check "... naming the file, line and why" has "zero, line 2" "$out"
 check "... a character device" has "a character device, not a regular file" "$out"
 
+# ---- particleMesh: a spacing that asks for too many particles ---------------------------
+d=$work/damBreak
+mkdir -p "$d"
+cp -r "$src/tutorials/validation/damBreak/system" "$src/tutorials/validation/damBreak/constant" "$d"
+for spacing in 1e-10 1e-20; do
+    sed -i "s/^spacing .*/spacing $spacing;/" "$d/system/particleMeshDict"
+    out=$(timeout 120 "$bin/particleMesh" -case "$d" 2>&1); rc=$?
+    check "particleMesh spacing $spacing: exit 1 at once, nothing allocated" test "$rc" -eq 1
+    check "... the estimate, the limit and where to raise it" \
+        bash -c "grep -q 'more than maxParticles 1e+07' <<< \"\$1\" && grep -q 'raise maxParticles in system/particleMeshDict' <<< \"\$1\" && grep -q 'particleMeshDict, line' <<< \"\$1\"" _ "$out"
+done
+check "... and no 0/ written" test ! -e "$d/0"
+# Out of memory (an address-space limit below what the scene needs, the limit raised): a fatal
+# error naming what was being built, the log kept. (Not with AddressSanitizer, which reserves
+# terabytes of address space and cannot run under ulimit -v.)
+if ! ldd "$bin/particleMesh" | grep -q libasan; then
+    sed -i "s/^spacing .*/spacing 1e-5;\nmaxParticles 1e9;/" "$d/system/particleMeshDict"
+    (ulimit -v 400000; OMP_NUM_THREADS=2 "$bin/particleMesh" -case "$d" > "$work/log.oom" 2>&1); rc=$?
+    check "particleMesh out of memory: exit 1, not an abort (134)" test "$rc" -eq 1
+    check "... naming what it was building" has "out of memory while building the material particles of 1 region(s) at spacing 1e-05 m" "$(cat "$work/log.oom")"
+    check "... the log kept (the scene and the estimate)" has "estimate: 6.57e+07 particles (maxParticles 1e+09)" "$(cat "$work/log.oom")"
+fi
+
 # ---- interrupted writes, replaces and purges -------------------------------------------
 c=$work/case
 mkdir -p "$c/system" "$c/0/lagrangian/particles" "$c/0.1/lagrangian/particles"

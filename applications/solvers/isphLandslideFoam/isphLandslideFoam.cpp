@@ -11,9 +11,11 @@
 
 #include <chrono>
 #include <ctime>
+#include <optional>
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/OutOfMemory.hpp"
 #include "core/app/ResourceUsage.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
@@ -36,7 +38,9 @@ void run(const isph::ArgList& args) {
   isph::Time time(args.casePath());
   isph::Time::installSignalHandlers();
   isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
+  std::optional<isph::Building> building(std::in_place, fmt::format("the solver from time {}", time.timeName()));
   isph::IsphSolver solver(time);
+  building.reset();
 
   isph::info("\nStarting time loop\n");
   isph::ProgressReporter progress(spec.name, time.value());
@@ -46,6 +50,7 @@ void run(const isph::ArgList& args) {
     const isph::TimeStepLimits limits = solver.nextDeltaT(time);
     if (time.settings().adjustTimeStep) time.adjustDeltaT(limits.value());
     ++time;
+    building.emplace(fmt::format("the time step to {} ({} particles)", time.timeName(), solver.particles().size()));
     isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
                time.settings().adjustTimeStep ? limits.limiting() : "fixed");
     const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step

@@ -8,13 +8,17 @@
 //
 // Keywords: src/particleGeneration/SceneReader.hpp; what is done: ParticleGenerator.hpp.
 #include <filesystem>
+#include <iostream>
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/OutOfMemory.hpp"
+#include "core/io/ReadFile.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particleGeneration/CsvExport.hpp"
 #include "particleGeneration/GenerationReport.hpp"
+#include "particleGeneration/ParticleEstimate.hpp"
 #include "particleGeneration/ParticleGenerator.hpp"
 #include "particleGeneration/SceneReader.hpp"
 #include "particles/CloudIO.hpp"
@@ -62,11 +66,19 @@ void run(const isph::ArgList& args) {
   const isph::FieldWriteOptions options = writeOptions(caseDir);
   isph::logScene(scene);
 
+  const isph::ParticleEstimate estimate = isph::estimateParticles(scene);
+  isph::info("    estimate: {:.3g} particles (maxParticles {:.3g}); memory about {} here, {} to {} in the solver",
+             estimate.particles(), scene.maxParticles, isph::bytesText(estimate.generationBytes()),
+             isph::bytesText(estimate.particles() * isph::ParticleEstimate::solverBytesPerParticle[0]),
+             isph::bytesText(estimate.particles() * isph::ParticleEstimate::solverBytesPerParticle[1]));
+  std::cout.flush();  // the log holds the scene if the generation runs out of memory
+
   const isph::GenerationResult result = isph::generateParticles(scene);
   isph::logGeneration(scene, result);
 
   const std::filesystem::path zero = caseDir / "0";
   if (std::filesystem::exists(zero)) isph::info("\nReplacing {}", zero.string());
+  const isph::Building building(fmt::format("the fields of {} particles in {}", result.cloud.size(), zero.string()));
   isph::StagedDirectory staged(zero);
   isph::writeCloud(staged.path(), "0", result.cloud, options);
   staged.commit();

@@ -10,6 +10,7 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/app/OutOfMemory.hpp"
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
@@ -54,6 +55,7 @@ void run(const isph::ArgList& args) {
   for (const auto& time : times) {
     const auto cloud = skipped.read(time, [&] { return isph::readCloudFields(args.casePath() / time.name, cloudName, fields); });
     if (!cloud) continue;
+    const isph::Building building(fmt::format("the VTK file of time {} ({} particles)", time.name, cloud->cloud.size()));
     const auto poly = isph::cloudPolyData(*cloud, time.value, {.noWalls = args.found("noWalls")});
     const std::string file = args.caseName() + "_" + time.name + ".vtp";
     isph::writeVtp(poly, vtkDir / file, format);

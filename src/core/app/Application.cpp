@@ -4,10 +4,12 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/app/Banner.hpp"
+#include "core/app/OutOfMemory.hpp"
 #include "core/io/StagingRecovery.hpp"
 
 namespace isph {
@@ -32,6 +34,7 @@ void recoverCase(const ApplicationSpec& spec, const ArgList& args) {
 
 int runApplication(const ApplicationSpec& spec, int argc, const char* const* argv,
                    const std::function<void(const ArgList&)>& body) {
+  installOutOfMemoryHandler();
   try {
     const ArgList args(spec, argc, argv);
     if (spec.banner) std::cout << banner(args) << '\n';
@@ -45,6 +48,10 @@ int runApplication(const ApplicationSpec& spec, int argc, const char* const* arg
   } catch (const FatalError& e) {
     std::cout.flush();
     std::cerr << e.report() << "\nisphLandslide exiting\n" << std::flush;
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cout.flush();
+    std::cerr << "\n--> FATAL ERROR:\n" << outOfMemoryMessage() << "\n\nisphLandslide exiting\n" << std::flush;
     return 1;
   } catch (const std::exception& e) {
     std::cout.flush();

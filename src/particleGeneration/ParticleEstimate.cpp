@@ -1,0 +1,56 @@
+#include "particleGeneration/ParticleEstimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/io/ReadFile.hpp"
+
+namespace isph {
+
+ParticleEstimate estimateParticles(const Scene& scene) {
+  const Lattice lattice(scene.lattice, scene.spacing, scene.latticeOrigin);
+  ParticleEstimate e;
+  for (const RegionSpec& r : scene.regions) {
+    e.material += r.shape->measure() / lattice.siteArea();
+    const BoundingBox box = r.shape->boundingBox();
+    if (box.empty()) continue;
+    // Lattice::range's columns and rows, in floating point (no overflow for any spacing).
+    e.tested +=
+        (box.size().x() / lattice.spacing() + 3) * (box.size().y() / lattice.rowSpacing() + 3);
+  }
+  for (const WallSpec& w : scene.walls) {
+    e.walls += (w.surface->chain().length() / scene.spacing + 1) * scene.wallLayers;
+  }
+  return e;
+}
+
+void checkParticleEstimate(const Scene& scene, const ParticleEstimate& estimate) {
+  // The filling tests every site of the regions' bounding boxes: a scene may test many more
+  // than it fills, but not without bound (a hundred times the limit takes hours).
+  const double tested = estimate.tested / 100;
+  const double n = std::max(estimate.particles(), tested);
+  if (n <= scene.maxParticles) return;
+  const SourceLocation& where =
+      scene.maxParticlesWhere.file ? scene.maxParticlesWhere : scene.spacingWhere;
+  const std::string count =
+      n == estimate.particles()
+          ? fmt::format("about {:.3g} particles ({:.3g} material, {:.3g} wall and dummy)",
+                        estimate.particles(), estimate.material, estimate.walls)
+          : fmt::format(
+                "{:.3g} lattice sites to test in the regions' bounding boxes (for {:.3g} "
+                "particles)",
+                estimate.tested, estimate.particles());
+  fatalIOError(
+      where,
+      fmt::format("spacing {} m gives {}, more than maxParticles {:.3g}.\n"
+                  "    Memory: particleMesh about {}, the solver about {} to {} (2.4-4.6 KB per "
+                  "particle).\n"
+                  "    Check the spacing (in metres); for a scene this large raise maxParticles in "
+                  "system/particleMeshDict.",
+                  scene.spacing, count, scene.maxParticles, bytesText(estimate.generationBytes()),
+                  bytesText(estimate.particles() * ParticleEstimate::solverBytesPerParticle[0]),
+                  bytesText(estimate.particles() * ParticleEstimate::solverBytesPerParticle[1])));
+}
+
+}  // namespace isph

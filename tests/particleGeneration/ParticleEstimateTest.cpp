@@ -1,0 +1,58 @@
+// The estimate that particleMesh checks against maxParticles before it allocates: close to
+// what the generation then makes, and a refusal (not an allocation) above the limit.
+#include <gtest/gtest.h>
+
+#include "SceneTestHelpers.hpp"
+#include "geometry/Box.hpp"
+#include "geometry/Polygon.hpp"
+#include "particleGeneration/ParticleEstimate.hpp"
+
+namespace isph {
+namespace {
+
+using test::addRegion;
+using test::addWall;
+using test::emptyScene;
+
+Scene tank(double dx) {
+  Scene s = emptyScene(dx);
+  addRegion(s, "water", std::make_unique<Box>(Vec2(0, 0), Vec2(0.5, 0.3)));
+  addRegion(s, "slope", std::make_unique<Polygon>(std::vector<Vec2>{{0.5, 0}, {1, 0}, {0.5, 0.4}}));
+  addWall(s, "tank", {{0, 0.6}, {0, 0}, {1.2, 0}, {1.2, 0.6}});
+  return s;
+}
+
+// The material count is area / site area (within the lattice's 1 %, LatticeCountTest); the
+// walls' length / dx + 1 per layer is exact on straight segments and within a few particles
+// at corners.
+TEST(ParticleEstimate, CloseToWhatTheGenerationMakes) {
+  const Scene s = tank(0.01);
+  const ParticleEstimate e = estimateParticles(s);
+  const GenerationResult r = generateParticles(s);
+  const auto n = static_cast<double>(r.cloud.size());
+  EXPECT_NEAR(e.particles() / n, 1.0, 0.03) << e.particles() << " estimated, " << n << " made";
+  EXPECT_GE(e.tested, e.material);
+}
+
+TEST(ParticleEstimate, AboveTheLimitIsRefusedBeforeAnythingIsMade) {
+  Scene s = tank(1e-7);  // 2.5e13 particles
+  s.maxParticles = 1e7;
+  s.spacingWhere =
+      SourceLocation{std::make_shared<const std::string>("system/particleMeshDict"), 12, 1};
+  const auto e = test::expectFatal([&] { generateParticles(s); });
+  EXPECT_EQ(e.where().line, 12);
+  EXPECT_NE(e.report().find("spacing 1e-07 m gives about 2.5"), std::string::npos) << e.report();
+  EXPECT_NE(e.report().find("more than maxParticles 1e+07"), std::string::npos) << e.report();
+  // A thin slanted region: 1e16 bounding-box sites to test for 5e10 particles made.
+  Scene thin = emptyScene(1e-6);
+  thin.maxParticles = 1e13;
+  addRegion(thin, "sliver",
+            std::make_unique<Polygon>(std::vector<Vec2>{{0, 0}, {100, 100}, {100, 100.001}}));
+  const auto sliver = test::expectFatal([&] { generateParticles(thin); });
+  EXPECT_NE(sliver.report().find("lattice sites to test in the regions' bounding boxes"),
+            std::string::npos)
+      << sliver.report();
+}
+
+}  // namespace
+}  // namespace isph
