@@ -6,6 +6,7 @@
 
 #include "core/Log.hpp"
 #include "core/dictionary/Dictionary.hpp"
+#include "isph/StepState.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 
 namespace isph {
@@ -45,6 +46,26 @@ int ImplicitViscousStep::preconditionersBuilt() const {
   int n = coupledSolver_->preconditionersBuilt();
   for (const auto& s : solvers_) n += s->preconditionersBuilt();
   return n;
+}
+
+void ImplicitViscousStep::saveState(StepState& state) const {
+  state.frictionStates.clear();
+  for (const auto k : activeSet_.keptStates()) state.frictionStates.push_back(static_cast<label>(k));
+  state.slipDirections = activeSet_.keptDirections();
+  state.viscousIncrements = keptIncrement_;
+  state.viscousIncrementDt = keptDt_;
+}
+
+void ImplicitViscousStep::restoreState(const StepState& state) {
+  std::vector<WallFrictionActiveSet::State> states(state.frictionStates.size());
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const label v = state.frictionStates[i];
+    if (v < 0 || v > 2) fatalError(fmt::format("uniform/frictionStates: state {} of particle {} is not 0, 1 or 2", v, i));
+    states[i] = static_cast<WallFrictionActiveSet::State>(v);
+  }
+  activeSet_.restoreKept(std::move(states), state.slipDirections);
+  keptIncrement_ = state.viscousIncrements;
+  keptDt_ = state.viscousIncrementDt;
 }
 
 void ImplicitViscousStep::renumbered() {

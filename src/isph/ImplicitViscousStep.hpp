@@ -37,6 +37,8 @@
 
 namespace isph {
 
+struct StepState;
+
 class ImplicitViscousStep {
  public:
   // One solver per component (their AMG set-ups are kept apart), configured from solverDict.
@@ -63,6 +65,10 @@ class ImplicitViscousStep {
   int frictionSolvesSettled() const { return frictionSettled_; }
   int frictionPassesDone() const { return frictionPassesDone_; }
   int maxFrictionPasses() const { return maxFrictionPasses_; }
+  // What the solve carries to the next step, by origId (the active set's kept stick/slip
+  // states, the warm start's increments): into and out of a restart's StepState.
+  void saveState(StepState& state) const;
+  void restoreState(const StepState& state);
   // The Coulomb force of the walls on each material particle in the last solve [N, per metre
   // in 2D]: tangential, zero off the friction walls; empty when that solve had no friction.
   const std::vector<Vec3>& frictionForce() const { return frictionForce_; }

@@ -6,14 +6,18 @@
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 
 #include "core/Log.hpp"
 #include "core/fields/FieldIO.hpp"
 #include "core/io/AtomicFile.hpp"
+#include "core/time/TimeName.hpp"
 #include "isph/EffectiveViscosity.hpp"
 #include "isph/Gravity.hpp"
 #include "isph/MaterialGradient.hpp"
+#include "isph/StepState.hpp"
+#include "isph/StartupChecks.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 #include "isph/IntermediateVelocity.hpp"
 #include "isph/LaggedPressure.hpp"
@@ -60,6 +64,10 @@ IsphSolver::IsphSolver(const Time& time) {
   info("Reading cloud '{}' from {}", cloudName, time.timeName());
   ps_.cloud = readCloud(time.timePath(), cloudName);
   const int dim = ps_.cloud.properties.dimension;
+  // What the run that wrote this time carried between its steps (StepState.hpp): a restart
+  // takes it up, so that it continues as the uninterrupted run.
+  const std::optional<StepState> state = readStepState(time.timePath());
+  if (state) info("    solver state (step {}) read from {}/uniform/isphState", state->stepsTaken, time.timeName());
   // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
   // reordered below.
   std::unordered_map<label, double> writtenDensity;
@@ -75,7 +83,7 @@ IsphSolver::IsphSolver(const Time& time) {
   g_ = readGravity(caseDir);
   kernel_ = makeKernel(schemes_.kernel, schemes_.hOverDx * ps_.cloud.properties.spacing, dim);
   initialiseParticleSystem(ps_, *materials_, *kernel_);
-  setSceneScales();
+  setSceneScales(state ? &state->materialHeights : nullptr);
 
   info("\nReading system/isphSolution");
   const Dictionary solution = readOptional(caseDir / "system" / "isphSolution", "system/isphSolution");
@@ -108,10 +116,11 @@ IsphSolver::IsphSolver(const Time& time) {
   }
   // A case from particleMesh has no wall pressures yet (a restart has them): its first step
   // is a plain projection, whose pressure the incremental projection then carries on.
-  freshStart_ = std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
+  freshStart_ = !state && std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
                             [](double v) { return v == 0.0; });
   initialiseWallPressure();
   if (schemes_.method == Method::wcsph) {
+    if (schemes_.soundSpeed <= 0 && state && state->soundSpeed > 0) schemes_.soundSpeed = state->soundSpeed;
     if (schemes_.soundSpeed <= 0) schemes_.soundSpeed = defaultSoundSpeed(ps_, g_);
     if (!(schemes_.soundSpeed > 0)) {
       fatalError("method wcsph: a scene at rest without gravity has no speed scale for the default sound speed; "
@@ -138,15 +147,8 @@ IsphSolver::IsphSolver(const Time& time) {
       schemes_.freeSurfaceThreshold, schemes_.freeSurfaceGradient, schemes_.minNeighbourFraction,
       fullLatticeNeighbourCount(*kernel_, ps_.dx, ps_.cloud.properties.lattice, dim), kernel_->h());
 
-  // The domain: the initial particles' bounding box, enlarged each way by its largest side.
-  domainMin_ = domainMax_ = ps_.cloud.positions[0];
-  for (const auto& x : ps_.cloud.positions) {
-    domainMin_ = domainMin_.cwiseMin(x);
-    domainMax_ = domainMax_.cwiseMax(x);
-  }
-  const Vec3 margin = Vec3::Constant((domainMax_ - domainMin_).maxCoeff() + 10 * ps_.dx);
-  domainMin_ -= margin;
-  domainMax_ += margin;
+  setDomain(time, cloudName, state);
+  if (state) restoreState(*state);
 
   info("\nActive models and schemes");
   info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", dim, ps_.size(), ps_.nMaterial,
@@ -166,9 +168,62 @@ IsphSolver::IsphSolver(const Time& time) {
 
 IsphSolver::~IsphSolver() = default;
 
-void IsphSolver::setSceneScales() {
-  // Each material's height along gravity (its extent if there is no gravity).
+void IsphSolver::setDomain(const Time& time, const std::string& cloudName, const std::optional<StepState>& state) {
+  // The domain the particles must stay in (StartupChecks.hpp): that of the case's first
+  // particles, carried in the solver state; a restart's particles are checked against it.
+  const auto cloudDir = time.timePath() / "lagrangian" / cloudName;
+  SceneDomain domain;
+  if (state) {
+    domain = {state->domainMin, state->domainMax};
+    checkInsideDomain(ps_, domain, cloudDir, "that of the case's first particles (uniform/isphState)");
+  } else if (const auto times = listTimes(time.path()); !times.empty() && times.front().name != time.timeName() &&
+                                                        std::filesystem::exists(time.path() / times.front().name /
+                                                                                "lagrangian" / cloudName / "positions")) {
+    // A time written without the state: the domain of the first time directory's particles.
+    const auto first = time.path() / times.front().name / "lagrangian" / cloudName;
+    domain = sceneDomain(readField<Vec3>(first / "positions"), ps_.dx);
+    checkInsideDomain(ps_, domain, cloudDir, fmt::format("the bounding box of the particles of {}", first.string()));
+  } else {
+    domain = sceneDomain(ps_.cloud.positions, ps_.dx);
+  }
+  domainMin_ = domain.min;
+  domainMax_ = domain.max;
+}
+
+StepState IsphSolver::currentState() const {
+  StepState s;
+  s.stepsTaken = stepsTaken_;
+  s.stepsSinceReorder = stepsSinceReorder_;
+  s.freshStart = freshStart_;
+  s.viscosityKnown = !eta_.empty();
+  s.maxNu = maxNu_;
+  s.maxViscousAcceleration = maxViscousAcceleration_;
+  s.maxAcceleration = maxAcceleration_;
+  s.soundSpeed = wcsph_ ? wcsph_->soundSpeed() : 0.0;
+  s.domainMin = domainMin_;
+  s.domainMax = domainMax_;
+  s.materialHeights = sceneHeights_;
+  if (viscous_) viscous_->saveState(s);
+  return s;
+}
+
+void IsphSolver::restoreState(const StepState& s) {
+  stepsTaken_ = s.stepsTaken;
+  stepsSinceReorder_ = s.stepsSinceReorder;
+  freshStart_ = s.freshStart;
+  maxNu_ = s.maxNu;
+  // Only whether η exists matters before the next step computes it (nextDeltaT's explicit limit).
+  if (s.viscosityKnown) eta_.assign(ps_.nMaterial, 0.0);
+  maxViscousAcceleration_ = s.maxViscousAcceleration;
+  maxAcceleration_ = s.maxAcceleration;
+  if (viscous_) viscous_->restoreState(s);
+}
+
+void IsphSolver::setSceneScales(const std::vector<double>* heights) {
+  // Each material's height along gravity (its extent if there is no gravity); a restart
+  // takes those of the first start (the solver state), not those of the moved material.
   const Vec3 up = g_.norm() > 0 ? Vec3(-g_ / g_.norm()) : Vec3::UnitY();
+  sceneHeights_.assign(materials_->size(), 0.0);
   for (std::size_t m = 0; m < materials_->size(); ++m) {
     double lo = 1e300, hi = -1e300;
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
@@ -176,7 +231,9 @@ void IsphSolver::setSceneScales() {
       lo = std::min(lo, up.dot(ps_.cloud.positions[a]));
       hi = std::max(hi, up.dot(ps_.cloud.positions[a]));
     }
-    const double height = hi > lo ? hi - lo + ps_.dx : ps_.dx;
+    double height = hi > lo ? hi - lo + ps_.dx : ps_.dx;
+    if (heights && heights->size() == materials_->size()) height = (*heights)[m];
+    sceneHeights_[m] = height;
     (*materials_)[m].adaptToScene({.height = height, .gravity = g_.norm(), .spacing = ps_.dx});
   }
 }
@@ -538,9 +595,14 @@ void IsphSolver::write(Time& time) {
     writeField(dir.path() / "lagrangian" / ps_.cloud.name / "wallFriction", *friction, options);
   }
   if (wcsph_) writeField(dir.path() / "lagrangian" / ps_.cloud.name / "rho", wcsph_->density(), options);
+  writeStepState(dir.path(), currentState(), options.format);
   time.writeTimeState(dir.path());
   dir.commit();
   time.purgeOldWrites();
+  // A restart from this time builds fresh AMG hierarchies (they cannot be written): so does
+  // the uninterrupted run, and the two go on bit for bit.
+  ppe_->renumbered();
+  if (viscous_) viscous_->renumbered();
 }
 
 }  // namespace isph

@@ -30,11 +30,13 @@
 // the barrier with more than its along-bed weight: columnCollapse/README.md).
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "core/PhaseTimer.hpp"
 #include "core/time/Time.hpp"
 #include "isph/FreeSurfaceDetector.hpp"
 #include "isph/ImplicitViscousStep.hpp"
+#include "isph/StepState.hpp"
 #include "isph/IsphSchemes.hpp"
 #include "isph/KernelGradientCorrection.hpp"
 #include "isph/ParticleSystem.hpp"
@@ -102,7 +104,14 @@ class IsphSolver {
 
  private:
   void checkDomain(const Time& time) const;
-  void setSceneScales();
+  // The domain: from the solver state of a restart (its particles checked against it), else
+  // from the case's first particles.
+  void setDomain(const Time& time, const std::string& cloudName, const std::optional<StepState>& state);
+  // `heights`: the scene scales of a restart's state (else from the material's extent).
+  void setSceneScales(const std::vector<double>* heights);
+  // What the steps carry from one to the next, written with each time (StepState.hpp).
+  StepState currentState() const;
+  void restoreState(const StepState& state);
   // The wall pull limits and tangential pressure gradients that WallBoundaryPressure uses.
   void prepareWallPressure(const std::vector<char>& freeSurface);
   void initialiseWallPressure();
@@ -143,6 +152,7 @@ class IsphSolver {
   double maxAcceleration_ = 0;  // wcsph: the largest |du/dt| of the last step (force limit)
   std::vector<scalar> pStart_;  // p at the step start (restored when the PPE fails)
   Vec3 domainMin_, domainMax_;
+  std::vector<double> sceneHeights_;  // each material's height, the scale of its default etaMax
   double maxViscousAcceleration_ = 0;
   long stepsSinceReorder_ = 0;
   long stepsTaken_ = 0;

@@ -48,6 +48,14 @@ class WallFrictionActiveSet {
              const std::vector<Vec3>& u, const std::vector<label>& origId);
   // Keep the states for the next step's start.
   void remember(const std::vector<label>& origId);
+  // The kept states and slip directions, by origId: a restart writes and restores them
+  // (StepState.hpp), so that its first step starts from the states the last one ended in.
+  const std::vector<State>& keptStates() const { return keptState_; }
+  const std::vector<Vec3>& keptDirections() const { return keptDir_; }
+  void restoreKept(std::vector<State> states, std::vector<Vec3> directions) {
+    keptState_ = std::move(states);
+    keptDir_ = std::move(directions);
+  }
 
   State state(std::size_t a) const { return state_[a]; }
   // Particle a's drag block, added to its diagonal block of the velocity matrix (dim × dim):

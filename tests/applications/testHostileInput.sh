@@ -17,7 +17,7 @@ has() { grep -q -- "$1" <<< "$2"; }  # has <text> <output>
 deadPid() { sh -c 'echo $$'; }       # a process that has ended
 
 # ---- dictionaries ----------------------------------------------------------------------
-python3 -c "print('a { ' * 10000 + '} ' * 10000)" > "$work/deep"
+{ printf 'a { %.0s' $(seq 10000); printf '} %.0s' $(seq 10000); } > "$work/deep"
 out=$("$bin/isphDictionary" "$work/deep" 2>&1); rc=$?
 check "10,000 nested dictionaries: exit 1, not a crash" test "$rc" -eq 1
 check "... naming the limit" has "nested more than 100 levels" "$out"
@@ -76,6 +76,49 @@ kill "$running"; wait "$running" 2>/dev/null
 "$bin/isphListTimes" -case "$c" -time 0.1 -rm 2>/dev/null
 check "isphListTimes -rm removes a time and leaves nothing behind" \
     bash -c "[ ! -e '$c/0.1' ] && [ -z \"\$(ls -A '$c' | grep '^\\.0\\.1')\" ]"
+
+# ---- the solver's start-up checks ---------------------------------------------------------
+r=$work/restart
+mkdir -p "$r"
+cp -r "$src/tutorials/validation/damBreak/system" "$src/tutorials/validation/damBreak/constant" "$r"
+sed -i 's/^spacing .*/spacing 0.005715;/' "$r/system/particleMeshDict"
+sed -i 's/^writeFormat .*/writeFormat ascii;/; s/^writePrecision .*/writePrecision 17;/; s/^writeInterval .*/writeInterval 0.01;/' \
+    "$r/system/controlDict"
+"$bin/particleMesh" -case "$r" > "$work/log.particleMesh.restart" 2>&1 || { cat "$work/log.particleMesh.restart"; exit 1; }
+endLine=$(grep -n '^endTime' "$r/system/controlDict" | cut -d: -f1)
+sed -i 's/^endTime .*/endTime -1;/' "$r/system/controlDict"
+out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
+check "endTime before the start: exit 1, not 0 after zero steps" test "$rc" -eq 1
+check "... naming controlDict's endTime line" has "controlDict, line $endLine" "$out"
+check "... and what to do" has "endTime -1 is not after the start time 0" "$out"
+sed -i 's/^endTime .*/endTime 0.02;/' "$r/system/controlDict"
+sed -i 's/^writeInterval .*/writeInterval 1e-12;/' "$r/system/controlDict"
+out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
+check "writeInterval 1e-12: exit 1, not a time directory every step" test "$rc" -eq 1
+check "... naming writeInterval" has "writeInterval 1e-12 s is shorter than the time step" "$out"
+check "... and nothing written" test "$(ls -d "$r"/[0-9]* | wc -l)" -eq 1
+sed -i 's/^writeInterval .*/writeInterval 0.01;/' "$r/system/controlDict"
+"$bin/isphLandslideFoam" -case "$r" > "$work/log.solver" 2>&1
+check "the dam break runs to 0.02" test -d "$r/0.02"
+pos=$r/0.02/lagrangian/particles/positions
+first=$(awk '/^\($/ { print NR + 1; exit }' "$pos")
+cp "$pos" "$work/positions.good"
+awk -v n="$first" 'NR == n { $0 = "(3 -5 0)" } { print }' "$work/positions.good" > "$pos"
+sed -i 's/^endTime .*/endTime 0.03;/' "$r/system/controlDict"
+out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
+check "a particle moved out of the scene: exit 1, not a free fall" test "$rc" -eq 1
+check "... naming the positions file and line" has "0.02/lagrangian/particles/positions, line $first" "$out"
+check "... the scene's domain" has "outside the scene's domain" "$out"
+u=$r/0.02/lagrangian/particles/U
+cp "$work/positions.good" "$pos"
+cp "$u" "$work/U.good"
+awk -v n="$first" 'NR == n { $0 = "(0 nan 0)" } { print }' "$work/U.good" > "$u"
+out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
+check "a nan in U: exit 1 naming the file and line" has "0.02/lagrangian/particles/U, line $first" "$out"
+check "... not a finite number" has "'nan' is not a finite number" "$out"
+cp "$work/U.good" "$u"
+"$bin/isphLandslideFoam" -case "$r" > "$work/log.solver" 2>&1; rc=$?
+check "repaired, the restart runs on to 0.03" bash -c "[ $rc -eq 0 ] && [ -d '$r/0.03' ]"
 
 # ---- post-processing over incomplete or damaged times -----------------------------------
 t=$work/tank

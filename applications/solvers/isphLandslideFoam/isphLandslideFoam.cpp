@@ -3,8 +3,10 @@
 // writes time directories as system/controlDict says; every time directory is a restart.
 // With isphSchemes `method wcsph;` it runs the explicit weakly-compressible baseline instead.
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
-// Ctrl-C (SIGINT) or SIGTERM writes the time at the end of the step and then ends the process by
-// that signal (exit status 130 or 143), so a calling Allrun stops as well.
+// Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) writes the time at the end of the step
+// and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
+// stops as well. At start it refuses an endTime not after the start time, a writeInterval
+// shorter than the step and particles outside the scene (isph/StartupChecks.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 #include <fmt/format.h>
@@ -20,6 +22,7 @@
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
 #include "isph/IsphSolver.hpp"
+#include "isph/StartupChecks.hpp"
 #include "isph/StepWithRetry.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "postProcessing/functionObjects/FunctionObjectList.hpp"
@@ -37,10 +40,18 @@ const isph::ApplicationSpec spec{
 void run(const isph::ArgList& args) {
   isph::Time time(args.casePath());
   isph::Time::installSignalHandlers();
+  isph::checkEndTime(time);
   isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
   std::optional<isph::Building> building(std::in_place, fmt::format("the solver from time {}", time.timeName()));
   isph::IsphSolver solver(time);
   building.reset();
+  isph::checkWriteInterval(time, time.settings().adjustTimeStep ? solver.nextDeltaT(time).value()
+                                                                : time.settings().deltaT);
+  if (time.settings().writeFormat == isph::WriteFormat::ascii && time.settings().writePrecision < 17) {
+    isph::info("    restarts from the times written here are not exact: writeFormat ascii with writePrecision {} "
+               "(binary, or 17 digits, read back exactly)",
+               time.settings().writePrecision);
+  }
 
   isph::info("\nStarting time loop\n");
   isph::ProgressReporter progress(spec.name, time.value());

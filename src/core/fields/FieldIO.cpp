@@ -285,12 +285,31 @@ std::vector<T> parseField(std::string_view text, const std::string& fileName,
   return values;
 }
 
+template <class T>
+int fieldValueLine(const std::filesystem::path& file, std::size_t index) {
+  try {
+    const std::string text = readFileBytes(file);
+    const FieldHeader h = parseFieldHeader(text, file.string());
+    if (h.format == WriteFormat::binary) return 0;
+    FieldTextScanner in(text, h.dataOffset, h.dataLine, h.file);
+    std::uint64_t n = 0;
+    in.tryReadSize(n);
+    if (!in.accept('(')) return 0;
+    for (std::size_t i = 0; i < index; ++i) readValue<T>(in);
+    in.skipSpace();
+    return in.atEnd() ? 0 : in.here().line;
+  } catch (const FatalError&) {
+    return 0;
+  }
+}
+
 #define ISPH_INSTANTIATE_FIELD_IO(T)                                               \
   template std::string fieldClassName<T>();                                        \
   template void writeField<T>(const std::filesystem::path&, const std::vector<T>&, \
                               const FieldWriteOptions&);                           \
   template std::vector<T> readField<T>(const std::filesystem::path&, std::optional<std::size_t>); \
-  template std::vector<T> parseField<T>(std::string_view, const std::string&, std::optional<std::size_t>);
+  template std::vector<T> parseField<T>(std::string_view, const std::string&, std::optional<std::size_t>); \
+  template int fieldValueLine<T>(const std::filesystem::path&, std::size_t);
 
 ISPH_INSTANTIATE_FIELD_IO(scalar)
 ISPH_INSTANTIATE_FIELD_IO(label)

@@ -47,6 +47,11 @@ template <class T>
 std::vector<T> parseField(std::string_view text, const std::string& fileName,
                           std::optional<std::size_t> expectedSize = {});
 
+// The line of value `index` (0-based) of an ascii field file, for messages about that value;
+// 0 for a binary or uniform field, or one that cannot be read.
+template <class T>
+int fieldValueLine(const std::filesystem::path& file, std::size_t index);
+
 // "scalarField", "labelField", "vectorField", "symmTensorField".
 template <class T>
 std::string fieldClassName();

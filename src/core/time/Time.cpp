@@ -78,6 +78,7 @@ Time::Time(const fs::path& caseDir)
   value_ = start ? start->value
                  : (settings_.startFrom == StartFrom::startTime ? settings_.startTime : 0.0);
   name_ = start ? start->name : isph::timeName(value_, precision_);
+  writeOrigin_ = value_;
   restoreTimeState();
   startTime_ = value_;
   startName_ = name_;
@@ -99,6 +100,17 @@ void Time::restoreTimeState() {
     if (auto index = dict.getOptional<label>("index")) index_ = *index;
     stored = dict.getOptional<double>("value");
     dict.markRead("name");
+    // The write times continue on the grid of the run that wrote this time (origin + k
+    // writeInterval, the same floating-point sums), so that a restart from a written time
+    // steps as the uninterrupted run; a changed writeInterval starts a grid at this time.
+    const auto origin = dict.getOptional<double>("writeOrigin");
+    const auto writeIndex = dict.getOptional<long>("writeTimeIndex");
+    const auto interval = dict.getOptional<double>("writeInterval");
+    if (origin && writeIndex && interval && *interval == settings_.writeInterval &&
+        settings_.writeControl != WriteControl::timeStep) {
+      writeOrigin_ = *origin;
+      writeTimeIndex_ = *writeIndex;
+    }
   }
   // Use the exact stored value (the name is rounded) and the precision the name was made with.
   const double candidate = stored.value_or(value_);
@@ -132,7 +144,7 @@ void Time::adjustDeltaT(double dtWanted) {
   double target = endTime_;
   if (adjustable) {
     target = std::min(
-        target, startTime_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
+        target, writeOrigin_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
   }
   const double remaining = target - value_;
   if (remaining > 0) {
@@ -182,7 +194,7 @@ void Time::advance() {
     if (std::abs(value_ - target) <= 1e-6 * deltaT_ + 1e-14 * std::abs(target)) value_ = target;
   };
   if (settings_.writeControl != WriteControl::timeStep) {
-    snap(startTime_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
+    snap(writeOrigin_ + static_cast<double>(writeTimeIndex_ + 1) * settings_.writeInterval);
   }
   snap(endTime_);
   if (std::abs(value_) < 1e-12 * deltaT_) value_ = 0;
@@ -204,7 +216,7 @@ void Time::setWriteTime() {
     writeTime_ = index_ % static_cast<label>(settings_.writeInterval) == 0;
   } else {
     const auto index = static_cast<long>(
-        std::floor((value_ - startTime_ + 0.5 * deltaT_) / settings_.writeInterval));
+        std::floor((value_ - writeOrigin_ + 0.5 * deltaT_) / settings_.writeInterval));
     if (index > writeTimeIndex_) {
       writeTime_ = true;
       writeTimeIndex_ = index;
@@ -223,6 +235,11 @@ void Time::writeTimeState(const fs::path& timeDir) const {
   dict.set("index", index_);
   dict.set("deltaT", deltaT_);
   dict.set("deltaT0", deltaT0_);
+  if (settings_.writeControl != WriteControl::timeStep) {
+    dict.set("writeOrigin", writeOrigin_);
+    dict.set("writeTimeIndex", writeTimeIndex_);
+    dict.set("writeInterval", settings_.writeInterval);
+  }
   const fs::path uniform = timeDir / "uniform";
   std::error_code ec;
   fs::create_directories(uniform, ec);
@@ -259,7 +276,7 @@ bool Time::readModifiedControlDict() {
     if (s.deltaT != settings_.deltaT) deltaT_ = s.deltaT;
     if (s.writeControl != settings_.writeControl || s.writeInterval != settings_.writeInterval) {
       writeTimeIndex_ =
-          static_cast<long>(std::floor((value_ - startTime_ + 0.5 * deltaT_) / s.writeInterval));
+          static_cast<long>(std::floor((value_ - writeOrigin_ + 0.5 * deltaT_) / s.writeInterval));
     }
     if (s.timePrecision != settings_.timePrecision) precision_ = s.timePrecision;
     stopAt_ = s.stopAt;
@@ -281,6 +298,7 @@ void Time::installSignalHandlers() {
   action.sa_flags = SA_RESTART;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  sigaction(SIGHUP, &action, nullptr);  // the terminal closed (or ssh dropped): as SIGTERM
 }
 
 bool Time::stopRequested() { return signalCaught != 0; }

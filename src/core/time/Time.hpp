@@ -2,7 +2,7 @@
 // The run-time controller, modelled on OpenFOAM's Time: reads system/controlDict, picks the
 // start time (startFrom), restores the time state of a restart (<start>/uniform/time),
 // advances the time step by step, decides when to write, re-reads a modified controlDict
-// between steps and turns SIGINT/SIGTERM into "write now and stop".
+// between steps and turns SIGINT/SIGTERM/SIGHUP into "write now and stop".
 //
 //   Time runTime(caseDir);
 //   while (runTime.run()) {
@@ -56,8 +56,8 @@ class Time {
   void redoStep(double dt);
   bool writeTime() const { return writeTime_; }
 
-  // Write <timeDir>/uniform/time (value, name, index, deltaT, deltaT0) atomically; timeDir
-  // may be a staging directory that becomes timePath().
+  // Write <timeDir>/uniform/time (value, name, index, deltaT, deltaT0, and the grid of write
+  // times) atomically; timeDir may be a staging directory that becomes timePath().
   void writeTimeState(const std::filesystem::path& timeDir) const;
   // After a write: keep only the purgeWrite newest times written by this run (never the
   // start time); purgeWrite 0 keeps all.
@@ -66,13 +66,14 @@ class Time {
   // whether it was re-read. stopAt writeNow/noWriteNow, endTime and deltaT are honoured.
   bool readModifiedControlDict();
 
-  // First SIGINT/SIGTERM: write at the end of the next step and stop; a second one aborts.
+  // First SIGINT, SIGTERM or SIGHUP: write at the end of the next step and stop; a second one
+  // aborts.
   static void installSignalHandlers();
   static bool stopRequested();
   // After a run stopped that way has written and shut down: ends the process by the signal
-  // it caught, with the default action (status 130 for SIGINT, 143 for SIGTERM), so that a
-  // calling script (Allrun) stops too instead of post-processing a run that did not reach
-  // endTime. Returns (doing nothing) when no signal was caught.
+  // it caught, with the default action (status 130 for SIGINT, 143 for SIGTERM, 129 for
+  // SIGHUP), so that a calling script (Allrun) stops too instead of post-processing a run that
+  // did not reach endTime. Returns (doing nothing) when no signal was caught.
   static void exitBySignalIfCaught();
 
   // "ExecutionTime = 1.23 s  ClockTime = 2 s" (process CPU time, wall-clock since construction).
@@ -107,6 +108,7 @@ class Time {
   double deltaTSave_ = 0;
   label index_ = 0;
   double startTime_ = 0;
+  double writeOrigin_ = 0;  // write times are writeOrigin_ + k writeInterval (runTime controls)
   double endTime_ = 0;
   int precision_ = 6;
   StopAt stopAt_ = StopAt::endTime;

@@ -302,6 +302,44 @@ TEST(Time, WriteTimeStateAndRestart) {
   EXPECT_EQ(restart.timeIndex(), 6);
 }
 
+// A restart (after Ctrl-C at an odd time) writes on the grid of the run it continues: the same
+// sums origin + k writeInterval, so that a restart steps as the uninterrupted run. A changed
+// writeInterval starts a grid at the restart.
+TEST(Time, RestartContinuesTheWriteGrid) {
+  test::TempCase c;
+  const std::string controls =
+      "startFrom latestTime; endTime 0.5; deltaT 0.03; writeControl adjustableRunTime; writeInterval ";
+  writeControlDict(c, controls + "0.1;\n");
+  std::vector<double> continuous;
+  {
+    Time t(c.path());
+    while (t.run()) {
+      t.adjustDeltaT(0.03);
+      ++t;
+      if (t.writeTime()) continuous.push_back(t.value());
+      if (t.timeIndex() == 6) {  // stopped here (0.15)
+        fs::create_directories(t.timePath());
+        t.writeTimeState(t.timePath());
+      }
+    }
+  }
+  ASSERT_EQ(continuous.size(), 5u);
+  std::vector<double> restarted;
+  Time restart(c.path());
+  EXPECT_EQ(restart.timeName(), "0.15");
+  while (restart.run()) {
+    restart.adjustDeltaT(0.03);
+    ++restart;
+    if (restart.writeTime()) restarted.push_back(restart.value());
+  }
+  EXPECT_EQ(restarted, std::vector<double>(continuous.begin() + 1, continuous.end()));  // bitwise
+
+  writeControlDict(c, controls + "0.2;\n");
+  Time changed(c.path());  // latestTime: 0.15 still (nothing else was written)
+  changed.adjustDeltaT(0.5);
+  EXPECT_NEAR(changed.deltaT(), 0.2, 1e-12);  // the next write at 0.15 + 0.2
+}
+
 TEST(Time, RestartWithoutAdjustTimeStepUsesControlDictDeltaT) {
   test::TempCase c;
   c.write("0.5/uniform/time", "value 0.5; name \"0.5\"; index 50; deltaT 0.02; deltaT0 0.02;\n");

@@ -1,0 +1,90 @@
+#include "isph/StartupChecks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/Error.hpp"
+#include "core/fields/FieldIO.hpp"
+
+namespace isph {
+
+namespace {
+
+SourceLocation entryLocation(const Time& time, const char* key) {
+  const Entry* e = time.controlDict().findEntry(key);
+  return e ? e->location() : time.controlDict().location();
+}
+
+}  // namespace
+
+void checkEndTime(const Time& time) {
+  const ControlSettings& s = time.settings();
+  if (s.stopAt == StopAt::endTime && !(s.endTime > time.startTime())) {
+    fatalIOError(entryLocation(time, "endTime"),
+                 fmt::format("endTime {} is not after the start time {} (startFrom {}): the run "
+                             "would make no step.\n"
+                             "    To run on from time {}, raise endTime.",
+                             s.endTime, time.timeName(), toString(s.startFrom), time.timeName()));
+  }
+}
+
+void checkWriteInterval(const Time& time, double firstDeltaT) {
+  const ControlSettings& s = time.settings();
+  if (s.writeControl != WriteControl::timeStep && s.writeInterval < firstDeltaT) {
+    fatalIOError(
+        entryLocation(time, "writeInterval"),
+        fmt::format(
+            "writeInterval {} s is shorter than the time step {:.4g} s: with writeControl {} every "
+            "step would write a time directory{}.\n    To write every step use writeControl "
+            "timeStep; "
+            "writeInterval 1; otherwise a writeInterval of at least {:.4g} s.",
+            s.writeInterval, firstDeltaT, toString(s.writeControl),
+            s.writeControl == WriteControl::adjustableRunTime
+                ? fmt::format(" and the step would shrink to {} s", s.writeInterval)
+                : "",
+            firstDeltaT));
+  }
+}
+
+SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx) {
+  SceneDomain d;
+  if (positions.empty()) return d;
+  d.min = d.max = positions.front();
+  for (const auto& x : positions) {
+    d.min = d.min.cwiseMin(x);
+    d.max = d.max.cwiseMax(x);
+  }
+  const Vec3 margin = Vec3::Constant((d.max - d.min).maxCoeff() + 10 * dx);
+  d.min -= margin;
+  d.max += margin;
+  return d;
+}
+
+void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
+                       const std::filesystem::path& cloudDir, const std::string& domainSource) {
+  const auto& c = ps.cloud;
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    const Vec3& x = c.positions[a];
+    if ((x.array() >= domain.min.array()).all() && (x.array() <= domain.max.array()).all())
+      continue;
+    // Where it is in the file (the cloud was reordered material | wall | dummy on reading).
+    const auto file = cloudDir / "positions";
+    const auto ids = readField<label>(cloudDir / "origId");
+    const auto at = std::find(ids.begin(), ids.end(), c.origId[a]);
+    const std::size_t index = static_cast<std::size_t>(at - ids.begin());
+    const int line = fieldValueLine<Vec3>(file, index);
+    const std::string where = line > 0 ? fmt::format("line {}", line)
+                                       : fmt::format("value {} of {}", index + 1, ids.size());
+    fatalIOError(
+        SourceLocation{std::make_shared<const std::string>(file.string()), line, 0},
+        fmt::format(
+            "material particle origId {} ({}) is at ({:.6g} {:.6g} {:.6g}), outside the scene's "
+            "domain ({:.6g} {:.6g} {:.6g}) to ({:.6g} {:.6g} {:.6g}): {}, enlarged each way by its "
+            "largest side and 10 dx.\n    A field edited by hand? Restart from an earlier time.",
+            c.origId[a], where, x.x(), x.y(), x.z(), domain.min.x(), domain.min.y(), domain.min.z(),
+            domain.max.x(), domain.max.y(), domain.max.z(), domainSource));
+  }
+}
+
+}  // namespace isph

@@ -1,0 +1,41 @@
+#pragma once
+// What the solver refuses at start, each with the file and line to fix, instead of running
+// zero steps without a word, writing a time directory every step, or letting a particle that
+// was moved out of the scene fall for ever:
+//  - endTime not after the start time (system/controlDict, endTime);
+//  - with writeControl runTime or adjustableRunTime, a writeInterval shorter than the time
+//    step: every step would write a time directory (and adjustableRunTime would shrink the
+//    step to the interval: writeInterval 1e-12 ran at deltaT 1e-12);
+//  - a material particle outside the scene's domain: the bounding box of the case's first
+//    particles (those particleMesh made) enlarged each way by its largest side and 10 dx, the
+//    margin within which the solver keeps the particles during the run (IsphSolver).
+// Fields that are not finite numbers are refused by the field readers (FieldIO.hpp).
+#include <filesystem>
+#include <string>
+
+#include "core/Types.hpp"
+#include "core/time/Time.hpp"
+#include "isph/ParticleSystem.hpp"
+
+namespace isph {
+
+// FatalError at controlDict's endTime entry.
+void checkEndTime(const Time& time);
+// FatalError at controlDict's writeInterval entry. `firstDeltaT` is the step the run starts
+// with (the controlDict's deltaT, or the solver's first adjusted step).
+void checkWriteInterval(const Time& time, double firstDeltaT);
+
+struct SceneDomain {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+};
+
+// The domain of the particles at `positions` (the case's first particles): their bounding box
+// enlarged each way by its largest side and 10 dx.
+SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx);
+
+// FatalError naming the positions file of `cloudDir`, the line (ascii) or value of the first
+// material particle outside `domain`, its origId and position, and the domain.
+void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
+                       const std::filesystem::path& cloudDir, const std::string& domainSource);
+
+}  // namespace isph
