@@ -26,9 +26,13 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 std::string nearestWord(std::string_view word, const std::vector<std::string>& candidates) {
+  // No keyword is this long: no typo of one (and the edit distance costs length squared).
+  if (word.size() > 256) return {};
   std::string best;
   std::size_t bestDistance = std::string::npos;
   for (const auto& candidate : candidates) {
+    // Lengths that differ by more than 3 are more than 3 edits apart (the most accepted below).
+    if (candidate.size() > word.size() + 3 || word.size() > candidate.size() + 3) continue;
     const std::size_t d = editDistance(word, candidate);
     if (d < bestDistance) {
       bestDistance = d;

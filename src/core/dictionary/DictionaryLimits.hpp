@@ -14,6 +14,8 @@ struct DictionaryLimits {
   // Entries and tokens copied by $ substitution in one parse: each `$a` copies what a names,
   // so that a chain `b $a $a; c $b $b; ...` doubles at every step.
   static constexpr std::size_t maxSubstituted = std::size_t{1} << 22;
+  // Elements of one list value: a uniform list N{v} costs N copies for a few bytes of text.
+  static constexpr std::size_t maxListElements = std::size_t{1} << 24;
 };
 
 }  // namespace isph

@@ -207,6 +207,10 @@ Token Lexer::lexVariable(int line, int column) {
 
 Token Lexer::lexWordOrNumber(int line, int column) {
   std::string run = readRun();
+  if (run.empty()) {  // a NUL byte, which ends a word without being one: no progress otherwise
+    fatalIOError(SourceLocation{file_, line, column},
+                 "a NUL byte: a dictionary is text (a binary file, or one damaged on disk?)");
+  }
   double value = 0;
   bool integer = false;
   if (parseNumber(run, value, integer)) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/Types.hpp"
+#include "core/dictionary/DictionaryLimits.hpp"
 #include "core/dictionary/TokenReader.hpp"
 
 namespace isph {
@@ -104,6 +105,10 @@ struct ValueTraits<std::vector<T>> {
     if (!in.atEnd() && in.peek().isNumber() && in.peek().isInteger) {
       const Token& n = in.next();
       if (n.number < 0) in.errorAt(n, "a list size must not be negative");
+      if (n.number > static_cast<double>(DictionaryLimits::maxListElements)) {
+        in.errorAt(n, fmt::format("a list of {} elements is more than the {} a dictionary list may hold", n.text,
+                                  DictionaryLimits::maxListElements));
+      }
       size = static_cast<long>(n.number);
       if (in.acceptPunct('{')) {  // uniform list N{value}
         T value = ValueTraits<T>::read(in);

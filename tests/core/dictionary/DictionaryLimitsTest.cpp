@@ -81,6 +81,33 @@ TEST(DictionaryLimits, IncludeOfADeviceOrDirectoryIsRefused) {
   EXPECT_NE(e.report().find("not a regular file"), std::string::npos) << e.report();
 }
 
+// Found by fuzzing: a NUL byte ended a word without being one, and the lexer made empty words
+// at the same place until memory ran out (tests/fuzz/regressions/dictionary/).
+TEST(DictionaryLimits, ANulByteIsAnErrorNotAHang) {
+  const std::string text = std::string("a 1;\nclass dic") + '\0' + "t;\n";
+  expectErrorAt(expectFatal([&] { Dictionary::parse(text, "d"); }), "d", 2, {"a NUL byte"});
+}
+
+// Found by fuzzing: a list size beyond a long was cast to one (undefined behaviour), and a
+// uniform list 1000000000{1} asked for 8 GB.
+TEST(DictionaryLimits, HugeListSizesAreRefused) {
+  const auto d = Dictionary::parse("a 9000000000000000000000000000000000000000000(1);\nb 1000000000{1};\n", "d");
+  expectErrorAt(expectFatal([&] { d.get<std::vector<double>>("a"); }), "d", 1, {"more than the 16777216"});
+  expectErrorAt(expectFatal([&] { d.get<std::vector<double>>("b"); }), "d", 2, {"a list of 1000000000 elements"});
+}
+
+// "did you mean" compared a 1 MiB name with every keyword by edit distance (length squared
+// each): an undefined $<long name> in a large dictionary would not finish. Now it is refused
+// at once, without a suggestion.
+TEST(DictionaryLimits, AnUndefinedLongVariableIsRefusedAtOnce) {
+  std::string text;
+  for (int i = 0; i < 1000; ++i) text += fmt::format("{} {};\n", std::string(1000, 'k') + std::to_string(i), i);
+  text += "x $" + std::string(1000003, 'k') + ";\n";
+  const auto e = expectFatal([&] { Dictionary::parse(text, "d"); });
+  EXPECT_NE(e.report().find("undefined variable"), std::string::npos);
+  EXPECT_EQ(e.report().find("did you mean"), std::string::npos);
+}
+
 TEST(DictionaryLimits, FileBeyondTheSizeLimitIsRefused) {
   TempDir dir;
   const auto big = dir.path() / "big";
