@@ -120,6 +120,37 @@ cp "$work/U.good" "$u"
 "$bin/isphLandslideFoam" -case "$r" > "$work/log.solver" 2>&1; rc=$?
 check "repaired, the restart runs on to 0.03" bash -c "[ $rc -eq 0 ] && [ -d '$r/0.03' ]"
 
+# ---- SIGKILL at random moments while the solver writes and purges ------------------------
+k=$work/killed
+mkdir -p "$k"
+cp -r "$src/tutorials/validation/damBreak/system" "$src/tutorials/validation/damBreak/constant" "$k"
+sed -i 's/^spacing .*/spacing 0.005715;/' "$k/system/particleMeshDict"
+sed -i 's/^endTime .*/endTime 10;/; s/^writeInterval .*/writeInterval 0.002;/; s/^purgeWrite .*/purgeWrite 2;/' \
+    "$k/system/controlDict"
+"$bin/particleMesh" -case "$k" > "$work/log.particleMesh.killed" 2>&1 || { cat "$work/log.particleMesh.killed"; exit 1; }
+complete=0
+for delay in 0.7 0.45 1.1 0.3 0.9 0.6; do
+    "$bin/isphLandslideFoam" -case "$k" > "$work/log.killed" 2>&1 &
+    solver=$!
+    sleep "$delay"
+    kill -KILL "$solver" 2>/dev/null; wait "$solver" 2>/dev/null
+    "$bin/isphListTimes" -case "$k" > "$work/times" 2> "$work/recovered"
+    ok=true
+    for time in $(cat "$work/times"); do  # every listed time is complete: every field reads
+        "$bin/toVTK" -case "$k" -time "$time" > "$work/log.toVTK.killed" 2>&1 || ok=false
+        grep -q "skipped" "$work/log.toVTK.killed" && ok=false
+    done
+    [ -z "$(ls -A "$k" | grep '^\.')" ] || ok=false   # nothing left hidden after the recovery
+    $ok && complete=$((complete + 1))
+done
+check "after 6 SIGKILLs while writing and purging, every listed time is complete and nothing hidden is left" \
+    test "$complete" -eq 6
+sed -i 's/^endTime .*/endTime 0.5;/' "$k/system/controlDict"
+latest=$("$bin/isphListTimes" -case "$k" -latestTime 2>/dev/null)
+sed -i "s/^endTime .*/endTime $(awk -v t="$latest" 'BEGIN { print t + 0.004 }');/" "$k/system/controlDict"
+"$bin/isphLandslideFoam" -case "$k" > "$work/log.killed.restart" 2>&1; rc=$?
+check "... and the run restarts from the latest (exit 0)" test "$rc" -eq 0
+
 # ---- post-processing over incomplete or damaged times -----------------------------------
 t=$work/tank
 cp -r "$src/tests/postProcessing/cases/hydrostaticTank" "$t"
