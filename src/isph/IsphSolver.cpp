@@ -12,7 +12,6 @@
 #include "core/Log.hpp"
 #include "core/fields/FieldIO.hpp"
 #include "core/io/AtomicFile.hpp"
-#include "core/time/TimeName.hpp"
 #include "isph/EffectiveViscosity.hpp"
 #include "isph/Gravity.hpp"
 #include "isph/MaterialGradient.hpp"
@@ -147,7 +146,11 @@ IsphSolver::IsphSolver(const Time& time) {
       schemes_.freeSurfaceThreshold, schemes_.freeSurfaceGradient, schemes_.minNeighbourFraction,
       fullLatticeNeighbourCount(*kernel_, ps_.dx, ps_.cloud.properties.lattice, dim), kernel_->h());
 
-  setDomain(time, cloudName, state);
+  // The domain the particles must stay in; a restart's particles are checked against it.
+  const SceneDomain domain =
+      startDomain(time, cloudName, ps_, state ? std::optional(SceneDomain{state->domainMin, state->domainMax}) : std::nullopt);
+  domainMin_ = domain.min;
+  domainMax_ = domain.max;
   if (state) restoreState(*state);
 
   info("\nActive models and schemes");
@@ -167,28 +170,6 @@ IsphSolver::IsphSolver(const Time& time) {
 }
 
 IsphSolver::~IsphSolver() = default;
-
-void IsphSolver::setDomain(const Time& time, const std::string& cloudName, const std::optional<StepState>& state) {
-  // The domain the particles must stay in (StartupChecks.hpp): that of the case's first
-  // particles, carried in the solver state; a restart's particles are checked against it.
-  const auto cloudDir = time.timePath() / "lagrangian" / cloudName;
-  SceneDomain domain;
-  if (state) {
-    domain = {state->domainMin, state->domainMax};
-    checkInsideDomain(ps_, domain, cloudDir, "that of the case's first particles (uniform/isphState)");
-  } else if (const auto times = listTimes(time.path()); !times.empty() && times.front().name != time.timeName() &&
-                                                        std::filesystem::exists(time.path() / times.front().name /
-                                                                                "lagrangian" / cloudName / "positions")) {
-    // A time written without the state: the domain of the first time directory's particles.
-    const auto first = time.path() / times.front().name / "lagrangian" / cloudName;
-    domain = sceneDomain(readField<Vec3>(first / "positions"), ps_.dx);
-    checkInsideDomain(ps_, domain, cloudDir, fmt::format("the bounding box of the particles of {}", first.string()));
-  } else {
-    domain = sceneDomain(ps_.cloud.positions, ps_.dx);
-  }
-  domainMin_ = domain.min;
-  domainMax_ = domain.max;
-}
 
 StepState IsphSolver::currentState() const {
   StepState s;

@@ -104,9 +104,6 @@ class IsphSolver {
 
  private:
   void checkDomain(const Time& time) const;
-  // The domain: from the solver state of a restart (its particles checked against it), else
-  // from the case's first particles.
-  void setDomain(const Time& time, const std::string& cloudName, const std::optional<StepState>& state);
   // `heights`: the scene scales of a restart's state (else from the material's extent).
   void setSceneScales(const std::vector<double>* heights);
   // What the steps carry from one to the next, written with each time (StepState.hpp).

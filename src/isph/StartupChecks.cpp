@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "core/fields/FieldIO.hpp"
+#include "core/time/TimeName.hpp"
 
 namespace isph {
 
@@ -59,6 +60,26 @@ SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx) {
   d.min -= margin;
   d.max += margin;
   return d;
+}
+
+SceneDomain startDomain(const Time& time, const std::string& cloudName, const ParticleSystem& ps,
+                        const std::optional<SceneDomain>& kept) {
+  const auto cloudDir = time.timePath() / "lagrangian" / cloudName;
+  if (kept) {
+    checkInsideDomain(ps, *kept, cloudDir,
+                      "that of the case's first particles (uniform/isphState)");
+    return *kept;
+  }
+  // A time written without the state (or the first one): the domain of the first time's particles.
+  const auto times = listTimes(time.path());
+  const auto first =
+      times.empty() ? cloudDir : time.path() / times.front().name / "lagrangian" / cloudName;
+  if (first == cloudDir || !std::filesystem::exists(first / "positions"))
+    return sceneDomain(ps.cloud.positions, ps.dx);
+  const SceneDomain domain = sceneDomain(readField<Vec3>(first / "positions"), ps.dx);
+  checkInsideDomain(ps, domain, cloudDir,
+                    fmt::format("the bounding box of the particles of {}", first.string()));
+  return domain;
 }
 
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,

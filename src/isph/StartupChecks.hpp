@@ -11,6 +11,7 @@
 //    margin within which the solver keeps the particles during the run (IsphSolver).
 // Fields that are not finite numbers are refused by the field readers (FieldIO.hpp).
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/Types.hpp"
@@ -32,6 +33,12 @@ struct SceneDomain {
 // The domain of the particles at `positions` (the case's first particles): their bounding box
 // enlarged each way by its largest side and 10 dx.
 SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx);
+
+// The domain of a run starting at `time`: `kept` (a restart's, from its StepState), else that
+// of the particles of the case's first time directory, else of `ps`'s; the particles of `ps`
+// are checked to lie in it (checkInsideDomain) unless it is theirs.
+SceneDomain startDomain(const Time& time, const std::string& cloudName, const ParticleSystem& ps,
+                        const std::optional<SceneDomain>& kept);
 
 // FatalError naming the positions file of `cloudDir`, the line (ascii) or value of the first
 // material particle outside `domain`, its origId and position, and the domain.

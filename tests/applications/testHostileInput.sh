@@ -109,6 +109,11 @@ out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
 check "a particle moved out of the scene: exit 1, not a free fall" test "$rc" -eq 1
 check "... naming the positions file and line" has "0.02/lagrangian/particles/positions, line $first" "$out"
 check "... the scene's domain" has "outside the scene's domain" "$out"
+mv "$r/0.02/uniform/isphState" "$work/isphState.good"   # as written before the state was
+out=$("$bin/isphLandslideFoam" -case "$r" 2>&1); rc=$?
+check "... also from a time without the solver state (the domain of 0/)" \
+    bash -c "[ $rc -eq 1 ] && grep -q 'the bounding box of the particles of .*/0/lagrangian/particles' <<< \"\$1\"" _ "$out"
+mv "$work/isphState.good" "$r/0.02/uniform/isphState"
 u=$r/0.02/lagrangian/particles/U
 cp "$work/positions.good" "$pos"
 cp "$u" "$work/U.good"
