@@ -6,6 +6,7 @@
 
 #include "core/Types.hpp"
 #include "isph/materials/MaterialTable.hpp"
+#include "parallel/Halo.hpp"
 #include "particles/ParticleCloud.hpp"
 #include "sph/kernels/Kernel.hpp"
 #include "sph/neighbours/NeighbourList.hpp"
@@ -30,6 +31,26 @@ struct ParticleSystem {
   double latticeSum = 1;       // Σ_b V_b W_ab of a full lattice (self included): θ = 1 at rest
 
   NeighbourList neighbours;
+
+  // A parallel run (doc/parallel.md, src/isph/parallel): each kind's particles are this
+  // rank's own first, then its ghosts, copies of other ranks' particles within the kernel
+  // support: material [0, nOwnedMaterial) own and [nOwnedMaterial, nMaterial) ghosts, walls
+  // [wallBegin(), wallBegin() + nOwnedWall) own, dummies likewise. A loop over the material
+  // computes the ghosts' entries too (from their cut-off neighbourhoods: wrong), and
+  // exchangeGhosts (isph/parallel/GhostExchange.hpp) then gives them their owners' values before
+  // a pair loop reads them. The linear systems hold the own material particles' rows, numbered
+  // from firstRow over all ranks (globalRow). In a serial run everything is owned, firstRow 0.
+  std::size_t nOwnedMaterial = 0, nOwnedWall = 0, nOwnedDummy = 0;
+  long firstRow = 0;
+  std::vector<long> ghostRow;    // the global row of each ghost material particle
+  const Halo* halo = nullptr;    // null in a serial run
+  long globalRow(std::size_t a) const {
+    return a < nOwnedMaterial ? firstRow + static_cast<long>(a) : ghostRow[a - nOwnedMaterial];
+  }
+  bool isOwned(std::size_t a) const {
+    return a < nOwnedMaterial || (a >= wallBegin() && a < wallBegin() + nOwnedWall) ||
+           (a >= dummyBegin() && a < dummyBegin() + nOwnedDummy);
+  }
 
   std::size_t size() const { return cloud.size(); }
   bool isMaterial(std::size_t a) const { return a < nMaterial; }

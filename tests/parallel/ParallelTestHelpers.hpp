@@ -15,6 +15,10 @@ namespace isph::test {
 // block whose bottom row is wall particles and, below them, a row of dummy particles.
 inline ParticleCloud latticeCloud(int nx, int ny, int nz, double dx) {
   ParticleCloud c;
+  c.properties.materials = {"sand"};
+  c.properties.patches = {{"bed", 30.0}};
+  c.properties.dimension = nz > 1 ? 3 : 2;
+  c.properties.spacing = dx;
   label id = 0;
   for (int k = 0; k < nz; ++k) {
     for (int j = 0; j < ny; ++j) {
@@ -35,6 +39,7 @@ inline ParticleCloud latticeCloud(int nx, int ny, int nz, double dx) {
 // starts with particles everywhere, as on a rank-0 read).
 inline ParticleCloud everyNth(const ParticleCloud& all, int r, int n) {
   ParticleCloud c;
+  c.properties = all.properties;
   for (std::size_t i = static_cast<std::size_t>(r); i < all.size(); i += static_cast<std::size_t>(n)) {
     c.push_back(all.positions[i], all.origId[i], all.U[i], all.p[i], all.material[i],
                 static_cast<ParticleKind>(all.kind[i]), all.patch[i], all.normal[i], all.mass[i]);

@@ -8,6 +8,7 @@
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -26,6 +27,7 @@ const isph::ApplicationSpec spec{
                 {"cloud", "name", "the cloud (default: `cloud` in the dictionary, else particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 // The kernel that carries τ to the walls: the solver's (system/isphSchemes) when the case has one.
@@ -48,7 +50,8 @@ void run(const isph::ArgList& args) {
   std::unique_ptr<isph::Kernel> kernel;
   for (const auto& time : times) {
     isph::info("Time = {}", time.name);
-    const fs::path timeDir = args.casePath() / time.name;
+    const isph::DecomposedTime decomposed(args.casePath(), time.name, args.found("parallel"));
+    const fs::path& timeDir = decomposed.path();
     const isph::ParticleCloud cloud = isph::readCloud(timeDir, cloudName);
     // A material that slides on the walls (the solver wrote its wall friction) exchanges no τ
     // with them (PatchForces.hpp): τ is read only for one that does not.

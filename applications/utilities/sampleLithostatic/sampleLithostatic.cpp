@@ -23,6 +23,7 @@
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "isph/Gravity.hpp"
@@ -39,6 +40,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -59,7 +61,8 @@ void run(const isph::ArgList& args) {
   s.g = isph::readGravity(args.casePath());
 
   const std::string cloudName = args.option("cloud").value_or("particles");
-  const auto all = isph::listTimes(args.casePath());
+  const bool decomposed = args.found("parallel");
+  const auto all = decomposed ? isph::decomposedTimes(args.casePath()) : isph::listTimes(args.casePath());
   if (all.empty()) isph::fatalError(fmt::format("no time directories in {}", args.casePath().string()));
   std::string referenceName = all.front().name;
   if (referenceTime) {
@@ -71,7 +74,8 @@ void run(const isph::ArgList& args) {
   }
   const auto times = isph::selectedTimes(args);
   if (times.empty()) return;
-  const isph::ParticleCloud start = isph::readCloud(args.casePath() / referenceName, cloudName);
+  const isph::ParticleCloud start =
+      isph::readCloud(isph::DecomposedTime(args.casePath(), referenceName, decomposed).path(), cloudName);
 
   std::string text = fmt::format("# p against rho |g| cos(beta) depth, rho {} kg/m^3, g ({} {} {}), normal ({} {} {})\n", s.rho,
                                  s.g.x(), s.g.y(), s.g.z(), s.normal.x(), s.normal.y(), s.normal.z());
@@ -79,7 +83,8 @@ void run(const isph::ArgList& args) {
                       s.xMin, s.xMax, s.minDepth, s.height, referenceName);
   text += "# Time[s] l2[-] spread[-] maxDisplacement[m]\n";
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
+    const isph::DecomposedTime timeDir(args.casePath(), time.name, decomposed);
+    const isph::ParticleCloud cloud = isph::readCloud(timeDir.path(), cloudName);
     const isph::LithostaticError e = isph::lithostaticError(cloud, s);
     const double moved = isph::largestDisplacement(start, cloud);
     isph::info("Time = {}  l2 {:.6g}  spread {:.6g}  maxDisplacement {:.6g} m  ({} interior particles)", time.name, e.l2,

@@ -15,6 +15,7 @@
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -30,6 +31,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -51,7 +53,8 @@ void run(const isph::ArgList& args) {
                      ") from (" + fmt::format("{} {} {}", s.origin.x(), s.origin.y(), s.origin.z()) + ")\n" +
                      "# Time[s] runOut[m]\n";
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
+    const isph::DecomposedTime timeDir(args.casePath(), time.name, args.found("parallel"));
+    const isph::ParticleCloud cloud = isph::readCloud(timeDir.path(), cloudName);
     const auto front = isph::runOut(cloud, s);
     if (!front) {
       isph::warning(fmt::format("time {}: no material particle within maxHeight of the bed line", time.name));

@@ -20,6 +20,7 @@
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -35,6 +36,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -58,7 +60,8 @@ void run(const isph::ArgList& args) {
   const std::string cloudName = args.option("cloud").value_or("particles");
   const auto times = isph::selectedTimes(args);
   for (const auto& time : times) {
-    const isph::ParticleCloud cloud = isph::readCloud(args.casePath() / time.name, cloudName);
+    const isph::DecomposedTime timeDir(args.casePath(), time.name, args.found("parallel"));
+    const isph::ParticleCloud cloud = isph::readCloud(timeDir.path(), cloudName);
     const isph::SurfaceProfile profile = isph::surfaceProfile(cloud, s);
     std::string text = fmt::format("# free surface at time {}: highest material particle centre + dx/2 per bin\n", time.name);
     text += fmt::format("# bins of {} m along ({} {} {}) from ({} {} {}); height 0 where a bin has no material\n",

@@ -12,6 +12,7 @@
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "postProcessing/vtk/CloudPolyData.hpp"
 #include "postProcessing/vtk/PvdCollection.hpp"
 #include "postProcessing/vtk/VtpFile.hpp"
@@ -29,6 +30,7 @@ const isph::ApplicationSpec spec{
                 {"cloud", "name", "the cloud to convert (default particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 // `-fields '(U p)'` (or a single word) as a list of names; errors name the option.
@@ -50,7 +52,8 @@ void run(const isph::ArgList& args) {
 
   std::vector<isph::PvdEntry> converted;
   for (const auto& time : times) {
-    const auto cloud = isph::readCloudFields(args.casePath() / time.name, cloudName, fields);
+    const isph::DecomposedTime timeDir(args.casePath(), time.name, args.found("parallel"));
+    const auto cloud = isph::readCloudFields(timeDir.path(), cloudName, fields);
     const auto poly = isph::cloudPolyData(cloud, time.value, {.noWalls = args.found("noWalls")});
     const std::string file = args.caseName() + "_" + time.name + ".vtp";
     isph::writeVtp(poly, vtkDir / file, format);

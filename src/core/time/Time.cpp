@@ -48,8 +48,12 @@ fs::file_time_type modificationTime(const fs::path& file) {
 
 }  // namespace
 
-Time::Time(const fs::path& caseDir)
+Time::Time(const fs::path& caseDir) : Time(caseDir, std::string()) {}
+
+Time::Time(const fs::path& caseDir, const std::string& processorDir)
     : caseDir_(caseDir),
+      processorDir_(processorDir),
+      timesDir_(processorDir.empty() ? caseDir : caseDir / processorDir),
       controlDictFile_(caseDir / "system" / "controlDict"),
       controlDictTime_(modificationTime(controlDictFile_)),
       controlDict_(Dictionary::readFile(controlDictFile_)),
@@ -61,7 +65,13 @@ Time::Time(const fs::path& caseDir)
   endTime_ = settings_.endTime;
   stopAt_ = settings_.stopAt;
 
-  const std::vector<Instant> times = listTimes(caseDir_);
+  // A processor folder without times: the undecomposed start of a parallel run.
+  std::vector<Instant> times = listTimes(timesDir_);
+  fs::path startRoot = timesDir_;
+  if (times.empty() && !processorDir_.empty()) {
+    times = listTimes(caseDir_);
+    startRoot = caseDir_;
+  }
   const Instant* start = nullptr;
   switch (settings_.startFrom) {
     case StartFrom::firstTime:
@@ -78,6 +88,7 @@ Time::Time(const fs::path& caseDir)
   value_ = start ? start->value
                  : (settings_.startFrom == StartFrom::startTime ? settings_.startTime : 0.0);
   name_ = start ? start->name : isph::timeName(value_, precision_);
+  startPath_ = startRoot / name_;
   restoreTimeState();
   startTime_ = value_;
   startName_ = name_;
@@ -85,7 +96,7 @@ Time::Time(const fs::path& caseDir)
 
 // Restart contract: <start>/uniform/time holds the exact value, the index and the steps.
 void Time::restoreTimeState() {
-  const fs::path file = caseDir_ / name_ / "uniform" / "time";
+  const fs::path file = startPath_ / "uniform" / "time";
   std::optional<double> stored;
   if (fs::exists(file)) {
     const Dictionary dict = Dictionary::readFile(file);
@@ -237,10 +248,10 @@ void Time::purgeOldWrites() {
   if (writtenTimes_.empty() || writtenTimes_.back() != name_) writtenTimes_.push_back(name_);
   while (writtenTimes_.size() > static_cast<std::size_t>(settings_.purgeWrite)) {
     std::error_code ec;
-    fs::remove_all(caseDir_ / writtenTimes_.front(), ec);
+    fs::remove_all(timesDir_ / writtenTimes_.front(), ec);
     if (ec)
       warning(fmt::format("purgeWrite: cannot remove {}: {}",
-                          (caseDir_ / writtenTimes_.front()).string(), ec.message()));
+                          (timesDir_ / writtenTimes_.front()).string(), ec.message()));
     writtenTimes_.pop_front();
   }
 }
