@@ -59,9 +59,6 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
   if (sumOverRanks(ps.nMaterial) == 0) {  // (a rank of a parallel run may hold none)
     fatalError(fmt::format("cloud '{}' has no material particles: nothing to simulate", c.name));
   }
-  ps.nOwnedMaterial = ps.nMaterial;  // no ghosts yet (src/isph/parallel adds them)
-  ps.nOwnedWall = ps.nWall;
-  ps.nOwnedDummy = ps.nDummy;
 
   // Densities and volumes; walls take the mass-weighted mean density of the materials.
   const std::size_t n = c.size();
@@ -102,6 +99,15 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
       }
       ps.parentWall[ps.dummyBegin() + d] = static_cast<int>(ps.nMaterial) + parent[d];
     }
+  }
+}
+
+void markFrictionWalls(ParticleSystem& ps) {
+  ps.frictionWall.assign(ps.size(), 0);
+  for (std::size_t b = ps.wallBegin(); b < ps.size(); ++b) {
+    const std::size_t w = ps.isWall(b) ? b : static_cast<std::size_t>(ps.parentWall[b]);
+    const label patch = ps.cloud.patch[w];
+    ps.frictionWall[b] = patch >= 0 && ps.cloud.properties.patches[static_cast<std::size_t>(patch)].frictionAngle > 0;
   }
 }
 
