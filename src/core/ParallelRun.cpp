@@ -10,4 +10,6 @@ const ParallelRun& parallelRun() { return current; }
 
 void setParallelRun(const ParallelRun& run) { current = run; }
 
+int agreeOverRanks(int value) { return current.nProcs > 1 && current.maxOverRanks ? current.maxOverRanks(value) : value; }
+
 }  // namespace isph

@@ -10,7 +10,14 @@ struct ParallelRun {
   int rank = 0;
   int nProcs = 1;
   void (*abort)(int status) = nullptr;  // ends every rank (MPI_Abort); null in a serial run
+  // The largest of an integer over the ranks (MPI_Allreduce, collective): decisions every rank
+  // must take alike, such as stopping after a signal or re-reading a changed controlDict.
+  // Null without MPI.
+  int (*maxOverRanks)(int value) = nullptr;
 };
+
+// max over the ranks of a parallel run; the value itself otherwise.
+int agreeOverRanks(int value);
 
 const ParallelRun& parallelRun();
 void setParallelRun(const ParallelRun& run);

@@ -12,6 +12,12 @@ namespace {
 bool hypreInitialised = false;
 
 void abortAllRanks(int status) { MPI_Abort(MPI_COMM_WORLD, status); }
+
+int maxOverAllRanks(int value) {
+  int out = value;
+  MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return out;
+}
 }  // namespace
 
 ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
@@ -25,7 +31,7 @@ ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
     if (MPI_Init(&argc, &argv) != MPI_SUCCESS) fatalError("ParallelEnvironment: MPI_Init failed");
     ownsMpi_ = true;
   }
-  setParallelRun({.rank = rank(), .nProcs = nProcs(), .abort = abortAllRanks});
+  setParallelRun({.rank = rank(), .nProcs = nProcs(), .abort = abortAllRanks, .maxOverRanks = maxOverAllRanks});
   if (!hypreInitialised) {
     HYPRE_Init();
     hypreInitialised = true;

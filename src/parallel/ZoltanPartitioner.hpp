@@ -30,7 +30,8 @@ class ZoltanPartitioner {
   ZoltanPartitioner& operator=(const ZoltanPartitioner&) = delete;
 
   // The part of each of this rank's points (collective): a new partition of all ranks'
-  // points. `ids` are unique over all ranks (the particles' origId).
+  // points, each point in the part of its region by the kept cuts (equal points, one part).
+  // `ids` are unique over all ranks (the particles' origId).
   std::vector<int> partition(const std::vector<Vec3>& points, const std::vector<double>& weights,
                              const std::vector<label>& ids);
   // The part whose region holds x, from the cuts of the last partition (FatalError before one).

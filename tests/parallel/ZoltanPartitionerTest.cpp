@@ -91,3 +91,45 @@ TEST(Partition, RcbPartsAreBoxesThatDoNotOverlap) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace isph;
+
+// A dummy particle is partitioned at its wall particle's place: two objects at one point,
+// which RCB's balancing may split between parts. partition() places both by the kept cuts.
+TEST(Partition, EqualPointsShareTheirPart) {
+  const ParticleCloud all = test::latticeCloud(40, 30, 1, 0.01);
+  ParticleCloud mine = test::everyNth(all, thisRank(), nRanks());
+  std::vector<Vec3> points;
+  std::vector<label> ids;
+  for (std::size_t i = 0; i < mine.size(); ++i) {
+    for (int copy = 0; copy < 2; ++copy) {
+      points.push_back(Vec3(std::round(mine.positions[i].x() / 0.01) * 0.01, 0.0, 0.0));  // whole columns equal
+      ids.push_back(2 * mine.origId[i] + copy);
+    }
+  }
+  for (const char* algorithm : {"RCB", "HSFC"}) {
+    ZoltanPartitioner zoltan(algorithm, 2, 3);
+    const std::vector<int> part = zoltan.partition(points, std::vector<double>(points.size(), 1.0), ids);
+    // Every point of a column (x) in one part, on every rank.
+    std::vector<long> first(40, -1), clash(1, 0);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const auto column = static_cast<std::size_t>(std::lround(points[k].x() / 0.01));
+      if (first[column] < 0) first[column] = part[k];
+      clash[0] += first[column] != part[k];
+    }
+    std::vector<long> lowest(40), highest(40);
+    for (std::size_t c = 0; c < 40; ++c) {
+      lowest[c] = first[c] < 0 ? -1000 : -first[c];  // (a column this rank lacks counts for neither)
+      highest[c] = first[c];
+    }
+    sumOverRanks(std::span<long>(clash));
+    EXPECT_EQ(clash[0], 0) << algorithm << ": equal points in different parts";
+    for (std::size_t c = 0; c < 40; ++c) {
+      EXPECT_EQ(-maxOverRanks(lowest[c]), maxOverRanks(highest[c])) << algorithm << ": column " << c << " split over ranks";
+    }
+  }
+}
+
+}  // namespace

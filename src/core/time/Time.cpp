@@ -13,6 +13,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/ParallelRun.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "core/io/FoamFileHeader.hpp"
 #include "core/time/TimeName.hpp"
@@ -157,6 +158,9 @@ void Time::adjustDeltaT(double dtWanted) {
 
 Time& Time::operator++() {
   readModifiedControlDict();
+  // A parallel run's ranks stop at the same step: a signal that one rank caught (mpirun passes
+  // it on to each at its own moment) stops them all.
+  if (const int sig = agreeOverRanks(signalCaught); sig && !signalCaught) signalCaught = sig;
   if (signalCaught && !signalHandled_) {
     signalHandled_ = true;
     stopAt_ = StopAt::writeNow;
@@ -259,7 +263,8 @@ void Time::purgeOldWrites() {
 bool Time::readModifiedControlDict() {
   if (!settings_.runTimeModifiable) return false;
   const auto mtime = modificationTime(controlDictFile_);
-  if (mtime == controlDictTime_) return false;
+  // (every rank of a parallel run re-reads it at the same step, when any of them sees it changed)
+  if (!agreeOverRanks(mtime != controlDictTime_)) return false;
   controlDictTime_ = mtime;
   info("Re-reading system/controlDict");
   try {
