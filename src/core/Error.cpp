@@ -1,5 +1,7 @@
 #include "core/Error.hpp"
 
+#include "core/ParallelRun.hpp"
+
 #include <fmt/format.h>
 
 #include <atomic>
@@ -36,6 +38,7 @@ void fatalIOError(const SourceLocation& where, std::string message) {
 
 void warning(const std::string& message, const SourceLocation& where) {
   ++nWarnings;
+  if (!isMasterRank()) return;  // as the log: rank 0's (every rank reads the same dictionaries)
   std::cout.flush();
   if (where.file) {
     std::cerr << fmt::format("--> Warning: {}\n    file: {}.\n", message, where.str());

@@ -1,5 +1,7 @@
 #include "core/Log.hpp"
 
+#include "core/ParallelRun.hpp"
+
 #include <iostream>
 #include <mutex>
 #include <set>
@@ -12,6 +14,7 @@ std::set<std::string> echoed;
 }  // namespace
 
 void infoLine(std::string_view line) {
+  if (!isMasterRank()) return;  // a parallel run's log is rank 0's
   std::lock_guard lock(logMutex);
   std::cout << line << '\n';
 }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
+
 namespace isph {
 
 double effectiveViscosity(const ParticleSystem& ps, const MaterialTable& materials, const StrainRate& strain,
@@ -14,15 +17,17 @@ double effectiveViscosity(const ParticleSystem& ps, const MaterialTable& materia
   for (long ia = 0; ia < n; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
     eta[a] = materials[static_cast<std::size_t>(c.material[a])].viscosity(c.p[a], strain.shearRate[a]);
-    maxNu = std::max(maxNu, eta[a] / ps.rho[a]);
+    if (a < ps.ownMaterial()) maxNu = std::max(maxNu, eta[a] / ps.rho[a]);  // (parallel: the own)
   }
-  return maxNu;
+  exchangeGhosts(ps, eta);  // parallel: the pair viscosity reads η at ghosts
+  return maxOverRanks(maxNu);
 }
 
 std::vector<SymmTensor> deviatoricStress(const ParticleSystem& ps, const StrainRate& strain,
                                          const std::vector<double>& eta) {
   std::vector<SymmTensor> tau(ps.size(), SymmTensor::Zero());
   for (std::size_t a = 0; a < ps.nMaterial; ++a) tau[a] = 2.0 * eta[a] * strain.D[a];
+  exchangeGhosts(ps, tau);  // parallel: the walls' stress averages τ over ghosts too
   return tau;
 }
 

@@ -11,7 +11,8 @@
 
 namespace isph {
 
-// η for particles [0, nMaterial); returns the largest η/ρ (for the explicit viscous limit).
+// η for particles [0, nMaterial); returns the largest η/ρ (for the explicit viscous limit),
+// over all ranks of a parallel run.
 double effectiveViscosity(const ParticleSystem& ps, const MaterialTable& materials, const StrainRate& strain,
                           std::vector<double>& eta);
 

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
+
 namespace isph {
 
 FreeSurfaceDetector::FreeSurfaceDetector(double threshold, double gradientThreshold, double minNeighbourFraction,
@@ -57,12 +60,13 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
     }
     if (ps.isMaterial(ua)) {
       flags_[ua] = isSurface;
-      surface += isSurface;
+      surface += isSurface && ua < ps.ownMaterial();  // (parallel: the own particles)
     } else {
       flags_[ua] = isSurface || !touchesMaterial;
     }
   }
-  nSurface_ = static_cast<std::size_t>(surface);
+  nSurface_ = sumOverRanks(static_cast<std::size_t>(surface));
+  exchangeGhosts(ps, flags_);  // parallel: a ghost's flag from its whole neighbourhood, on its rank
 }
 
 int supportSector(double x, double y) {

@@ -27,9 +27,9 @@ class FreeSurfaceDetector {
   // Flags for all particles: 1 = free surface or inactive wall, 0 = interior (dummies: 0).
   void detect(const ParticleSystem& ps);
 
-  const std::vector<char>& flags() const { return flags_; }
+  const std::vector<char>& flags() const { return flags_; }  // (parallel: the owners' flags at ghosts)
   const std::vector<double>& divergence() const { return divR_; }
-  std::size_t nSurfaceMaterial() const { return nSurface_; }
+  std::size_t nSurfaceMaterial() const { return nSurface_; }  // over all ranks
 
  private:
   double threshold_;

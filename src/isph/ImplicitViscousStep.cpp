@@ -8,6 +8,7 @@
 #include "core/dictionary/Dictionary.hpp"
 #include "isph/StepState.hpp"
 #include "isph/WallBoundaryPressure.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -81,12 +82,12 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   const auto start = std::chrono::steady_clock::now();
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
-  const long nMat = static_cast<long>(ps.nMaterial);
+  const long nMat = static_cast<long>(ps.ownMaterial());  // (parallel: the own rows, numbered ps.globalRow)
   const double eta2 = 0.01 * h * h;
   const bool drag = friction && friction->active();
 
   // The pattern: each material particle and its material neighbours.
-  system_.firstRow = 0;
+  system_.firstRow = ps.firstRow;
   system_.symmetricHint = true;
   system_.rowStart.assign(static_cast<std::size_t>(nMat) + 1, 0);
   for (long a = 0; a < nMat; ++a) {
@@ -126,7 +127,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       const double kappa = -ma * mb * (eta[a] + etaB) / (ps.rho[a] * ps.rho[b]) * nl.F[kk] * r2 / (r2 + eta2);
       diagonal += kappa;
       if (material) {
-        system_.columns[pos] = static_cast<long>(b);
+        system_.columns[pos] = ps.globalRow(b);
         system_.values[pos] = -kappa;
         ++pos;
       } else {
@@ -136,7 +137,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
         r += kappa * (dt * fa + c.U[a].dot(n) * n);
       }
     }
-    system_.columns[diag] = static_cast<long>(a);
+    system_.columns[diag] = ps.globalRow(a);
     system_.values[diag] = diagonal;
     rhs[a] = r;
   }
@@ -190,7 +191,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       // classified again): what the walls take (WallFriction::wallTraction).
       frictionForce_.assign(n, Vec3::Zero());
       for (std::size_t a = 0; a < n; ++a) frictionForce_[a] = activeSet_.applied(a, velocityOf(xv, a, dim), dim);
-      const bool settled = activeSet_.update(xv, dim) == 0;
+      const bool settled = sumOverRanks(static_cast<long>(activeSet_.update(xv, dim))) == 0;  // parallel: all ranks
       if (settled && !last && coupledSolver_->stopsAtRelTol()) {
         coupledSolver_->keepPreconditionerForNextSolve();  // the same system, to the tolerance
         perf.push_back(coupledSolver_->solveFinal(coupled_, xv));
@@ -201,7 +202,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       if (settled) break;
     }
     activeSet_.remember(c.origId);
-    keepIncrement(ps, dt, force, ustar);
+    keepIncrement(ps, dt, force, ustar);  // (parallel: ustar of the own rows; ghosts follow in IsphSolver)
     ++frictionSolves_;
     frictionSettled_ += lastSettled_;
     frictionPassesDone_ += lastPasses_;
@@ -226,9 +227,9 @@ void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, con
   if (!warmFromLastIncrement_) return;
   const auto& c = ps.cloud;
   std::size_t size = 0;
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) size = std::max(size, static_cast<std::size_t>(c.origId[a]) + 1);
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) size = std::max(size, static_cast<std::size_t>(c.origId[a]) + 1);
   keptIncrement_.assign(std::max(size, keptIncrement_.size()), Vec3::Zero());
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {
     keptIncrement_[static_cast<std::size_t>(c.origId[a])] = ustar[a] - c.U[a] - dt * force(a);
   }
   keptDt_ = dt;
@@ -237,7 +238,10 @@ void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, con
 void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<Vec3>& rhs) {
   const std::size_t n = rhs.size();
   const auto D = static_cast<std::size_t>(dim);
-  coupled_.firstRow = 0;
+  // Particle a's components are rows D a + d of the block of D × (own rows) (parallel: from
+  // D × system_.firstRow, as system_'s columns number the particles over all ranks).
+  const long first = system_.firstRow * static_cast<long>(D);
+  coupled_.firstRow = first;
   coupled_.symmetricHint = true;
   // Row lengths first (the particle's own block, its material neighbours), then each row
   // filled in place, in parallel.
@@ -263,12 +267,12 @@ void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<Vec3>& rhs)
       const int di = static_cast<int>(d);
       auto pos = static_cast<std::size_t>(coupled_.rowStart[row]);
       // The particle's own block: the scalar diagonal plus its friction block.
-      coupled_.columns[pos] = static_cast<long>(row);
+      coupled_.columns[pos] = first + static_cast<long>(row);
       coupled_.values[pos++] = system_.values[begin] + activeSet_.block(a, di, di);
       if (onWall) {
         for (std::size_t e = 0; e < D; ++e) {
           if (e == d) continue;
-          coupled_.columns[pos] = static_cast<long>(a * D + e);
+          coupled_.columns[pos] = first + static_cast<long>(a * D + e);
           coupled_.values[pos++] = activeSet_.block(a, di, static_cast<int>(e));
         }
       }

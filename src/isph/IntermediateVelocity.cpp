@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "parallel/Reduce.hpp"
+
 namespace isph {
 
 double IntermediateVelocity::compute(const ParticleSystem& ps, const MaterialTable& materials,
@@ -32,11 +34,11 @@ double IntermediateVelocity::compute(const ParticleSystem& ps, const MaterialTab
         const double mb = ps.rho[b] * ps.volume[b];
         accel += mb * (eta[ua] + etaB) / (ps.rho[ua] * ps.rho[b]) * nl.F[kk] * r2 / (r2 + eta2) * (c.U[ua] - ub);
       }
-      maxAccel = std::max(maxAccel, accel.norm());
+      if (ua < ps.ownMaterial()) maxAccel = std::max(maxAccel, accel.norm());  // (parallel: the own)
     }
     ustar[ua] = c.U[ua] + dt * (g + accel);  // Eq. 6
   }
-  return maxAccel;
+  return maxOverRanks(maxAccel);
 }
 
 }  // namespace isph

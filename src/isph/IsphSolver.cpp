@@ -24,6 +24,8 @@
 #include "isph/ParticleShifting.hpp"
 #include "isph/VelocityCorrection.hpp"
 #include "isph/WallPenetrationGuard.hpp"
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
 #include "particles/CloudIO.hpp"
 
 namespace isph {
@@ -57,11 +59,12 @@ std::string findCloud(const std::filesystem::path& timeDir) {
 
 }  // namespace
 
-IsphSolver::IsphSolver(const Time& time) {
+IsphSolver::IsphSolver(const Time& time, bool parallel) {
+  if (parallel) distributed_ = std::make_unique<DistributedParticles>(time);  // parallel: doc/parallel.md
   const auto& caseDir = time.path();
-  const std::string cloudName = findCloud(time.timePath());
+  const std::string cloudName = findCloud(time.startPath());
   info("Reading cloud '{}' from {}", cloudName, time.timeName());
-  ps_.cloud = readCloud(time.timePath(), cloudName);
+  ps_.cloud = distributed_ ? distributed_->read(time, cloudName) : readCloud(time.startPath(), cloudName);
   const int dim = ps_.cloud.properties.dimension;
   // What the run that wrote this time carried between its steps (StepState.hpp): a restart
   // takes it up, so that it continues as the uninterrupted run.
@@ -70,7 +73,7 @@ IsphSolver::IsphSolver(const Time& time) {
   // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
   // reordered below.
   std::unordered_map<label, double> writtenDensity;
-  if (const auto file = time.timePath() / "lagrangian" / cloudName / "rho"; std::filesystem::is_regular_file(file)) {
+  if (const auto file = time.startPath() / "lagrangian" / cloudName / "rho"; std::filesystem::is_regular_file(file)) {
     const auto rho = readField<scalar>(file, ps_.cloud.size());
     for (std::size_t i = 0; i < rho.size(); ++i) writtenDensity[ps_.cloud.origId[i]] = rho[i];
   }
@@ -81,7 +84,12 @@ IsphSolver::IsphSolver(const Time& time) {
                                                ps_.cloud.properties.materials);
   g_ = readGravity(caseDir);
   kernel_ = makeKernel(schemes_.kernel, schemes_.hOverDx * ps_.cloud.properties.spacing, dim);
+  if (distributed_) {  // parallel: each rank's part, with the walls of its dummies
+    if (schemes_.method == Method::wcsph) fatalError("method wcsph does not run in parallel (it runs on one rank)");
+    distributed_->distribute(ps_.cloud, 2.0 * kernel_->supportRadius());
+  }
   initialiseParticleSystem(ps_, *materials_, *kernel_);
+  if (distributed_) distributed_->beginStep(ps_, *materials_, kernel_->supportRadius(), false, time);  // parallel: ghosts
   setSceneScales(state ? &state->materialHeights : nullptr);
 
   info("\nReading system/isphSolution");
@@ -107,16 +115,12 @@ IsphSolver::IsphSolver(const Time& time) {
   if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
   friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed, schemes_.frictionNormal);
   if (friction_->active()) wallFriction_.assign(ps_.size(), Vec3::Zero());  // (none before the first step)
-  ps_.frictionWall.assign(ps_.size(), 0);
-  for (std::size_t b = ps_.wallBegin(); b < ps_.size(); ++b) {
-    const std::size_t w = ps_.isWall(b) ? b : static_cast<std::size_t>(ps_.parentWall[b]);
-    const label patch = ps_.cloud.patch[w];
-    ps_.frictionWall[b] = patch >= 0 && ps_.cloud.properties.patches[static_cast<std::size_t>(patch)].frictionAngle > 0;
-  }
+  markFrictionWalls(ps_);
   // A case from particleMesh has no wall pressures yet (a restart has them): its first step
   // is a plain projection, whose pressure the incremental projection then carries on.
-  freshStart_ = !state && std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
-                            [](double v) { return v == 0.0; });
+  freshStart_ = allRanks(std::all_of(ps_.cloud.p.begin() + static_cast<long>(ps_.wallBegin()), ps_.cloud.p.end(),
+                                     [](double v) { return v == 0.0; }));  // parallel: all ranks
+  if (state) freshStart_ = false;
   initialiseWallPressure();
   if (schemes_.method == Method::wcsph) {
     if (schemes_.soundSpeed <= 0 && state && state->soundSpeed > 0) schemes_.soundSpeed = state->soundSpeed;
@@ -154,8 +158,10 @@ IsphSolver::IsphSolver(const Time& time) {
   if (state) restoreState(*state);
 
   info("\nActive models and schemes");
-  info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", dim, ps_.size(), ps_.nMaterial,
-       ps_.nWall, ps_.nDummy, ps_.dx, kernel_->h());
+  const std::size_t nMaterial = sumOverRanks(ps_.ownMaterial()), nWall = sumOverRanks(ps_.ownWall()),
+                    nDummy = sumOverRanks(ps_.ownDummy());  // parallel: all ranks'
+  info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", dim, nMaterial + nWall + nDummy,
+       nMaterial, nWall, nDummy, ps_.dx, kernel_->h());
   for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
   for (const auto& p : ps_.cloud.properties.patches) {
     info("    wall patch {}: no penetration ({}); fluids stick; granular material {}", p.name,
@@ -212,6 +218,7 @@ void IsphSolver::setSceneScales(const std::vector<double>* heights) {
       lo = std::min(lo, up.dot(ps_.cloud.positions[a]));
       hi = std::max(hi, up.dot(ps_.cloud.positions[a]));
     }
+    lo = minOverRanks(lo), hi = maxOverRanks(hi);  // parallel: all ranks
     double height = hi > lo ? hi - lo + ps_.dx : ps_.dx;
     if (heights && heights->size() == materials_->size()) height = (*heights)[m];
     sceneHeights_[m] = height;
@@ -233,14 +240,15 @@ void IsphSolver::prepareWallPressure(const std::vector<char>& surface) {
                         WallContact::coulombFriction;
     ps_.wallTangentialGradient[a] = slides ? gradP[a] : Vec3(ps_.rho[a] * g_);
   }
+  exchangeGhosts(ps_, ps_.wallTangentialGradient);  // parallel: the wall pressure reads it at ghosts
 }
 
 void IsphSolver::initialiseWallPressure() {
   // A case from particleMesh has no wall pressures yet (a restart has them): the walls take
   // the pressure of material at rest against them, so that the first step has wall friction.
   const auto& p = ps_.cloud.p;
-  if (!friction_->active() || std::any_of(p.begin() + static_cast<long>(ps_.wallBegin()), p.end(),
-                                          [](double v) { return v != 0.0; })) {
+  if (!friction_->active() || anyRank(std::any_of(p.begin() + static_cast<long>(ps_.wallBegin()), p.end(),
+                                                  [](double v) { return v != 0.0; }))) {  // parallel: all ranks
     return;
   }
   ps_.neighbours.build(ps_.cloud.positions, *kernel_);
@@ -328,11 +336,13 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
           lagged_[a] = laggedPressureForce(ps_, *kernel_, resting, g_, a, dt, &reaction[a]);
         }
       }
+      exchangeGhosts(ps_, lagged_);  // parallel: the walls' pressure reads it at ghosts
     }
     friction_->update(ps_, reaction.empty() ? nullptr : &reaction);
   }
   if (viscous_) {
     const auto perf = viscous_->solve(ps_, *materials_, eta_, friction_.get(), g_, dt, kernel_->h(), lagged_, ustar_);
+    exchangeGhosts(ps_, ustar_);  // parallel: solved for the own particles
     report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
     timer_.add("viscous assembly", viscous_->assemblySeconds());
     for (const auto& perf : report.viscous) {
@@ -341,18 +351,27 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
       timer_.add("viscous solve", perf.solveSeconds);
     }
     maxViscousAcceleration_ = 0;
-    if (friction_->active()) wallFriction_ = friction_->wallTraction(ps_, viscous_->frictionForce());
+    if (friction_->active()) {
+      std::vector<Vec3> force = viscous_->frictionForce();
+      if (!force.empty()) {  // parallel: solved for the own rows
+        force.resize(ps_.nMaterial, Vec3::Zero());
+        exchangeGhosts(ps_, force);
+      }
+      wallFriction_ = friction_->wallTraction(ps_, force);
+    }
     return;
   }
   auto t = timer_.scope("intermediate velocity");
   maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, kernel_->h(), ustar_);
   applyExplicitFriction(dt);
+  exchangeGhosts(ps_, ustar_);  // parallel
 }
 
 void IsphSolver::applyExplicitFriction(double dt) {
   if (!friction_->active()) return;
   std::vector<Vec3> applied;
   friction_->applyExplicit(ps_, dt, ustar_, &applied);
+  exchangeGhosts(ps_, applied);  // parallel
   wallFriction_ = friction_->wallTraction(ps_, applied);
 }
 
@@ -362,7 +381,8 @@ const std::vector<Vec3>* IsphSolver::wallFriction() const {
 
 TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
   double maxSpeed = 0;
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) maxSpeed = std::max(maxSpeed, ps_.cloud.U[a].norm());
+  for (std::size_t a = 0; a < ps_.ownMaterial(); ++a) maxSpeed = std::max(maxSpeed, ps_.cloud.U[a].norm());
+  maxSpeed = maxOverRanks(maxSpeed);  // parallel: all ranks
   // The explicit deviatoric term is stable below dt ≤ C_ν ρ h²/η: the largest η/ρ of the
   // last step (the models' bound before the first); the implicit step has no such limit.
   double maxNu = 0;
@@ -391,9 +411,14 @@ StepReport IsphSolver::step(const Time& time) {
   const double dt = time.deltaT();
   StepReport report;
   {
+    const bool reorder = stepsSinceReorder_++ % reorderInterval == 0;
+    if (distributed_) {  // parallel: new ghosts; on reordering steps, migration (and repartition)
+      auto t = timer_.scope("migration and ghosts");
+      distributed_->beginStep(ps_, *materials_, kernel_->supportRadius(), reorder, time);
+    }
     auto t = timer_.scope("neighbour search");
-    if (stepsSinceReorder_++ % reorderInterval == 0) {
-      reorderMaterialParticles(ps_, kernel_->supportRadius());
+    if (reorder) {
+      if (!distributed_) reorderMaterialParticles(ps_, kernel_->supportRadius());
       ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
       if (viscous_) viscous_->renumbered();
     }
@@ -435,12 +460,14 @@ StepReport IsphSolver::step(const Time& time) {
     std::vector<Vec3> oldU(ps_.cloud.U.begin(), ps_.cloud.U.begin() + static_cast<long>(ps_.nMaterial));
     if (!lagged_.empty()) {
       correctVelocityIncrement(ps_, correction_, ustar_, increment_, dt);
+      exchangeGhosts(ps_, ps_.cloud.U);  // parallel
       std::vector<Vec3> ustarTotal(ustar_);  // the walls' pressure from the whole condition
       for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustarTotal[a] -= dt * lagged_[a];
       updateWallPressure(ps_, ustarTotal, g_, dt);
     } else {
       correctVelocity(ps_, correction_, ustar_, g_, dt,
                       schemes_.pressureGradient == PressureGradientForm::symmetric ? kernel_.get() : nullptr);
+      exchangeGhosts(ps_, ps_.cloud.U);  // parallel
     }
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
       ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
@@ -534,13 +561,14 @@ void IsphSolver::finishStep(const Time& time, StepReport& report) {
                         guard.firstCrossing, guard.crossed));
   }
   totalWallCrossings_ += guard.crossed;
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) report.maxSpeed = std::max(report.maxSpeed, ps_.cloud.U[a].norm());
+  for (std::size_t a = 0; a < ps_.ownMaterial(); ++a) report.maxSpeed = std::max(report.maxSpeed, ps_.cloud.U[a].norm());
+  report.maxSpeed = maxOverRanks(report.maxSpeed);  // parallel: all ranks
   report.courant = report.maxSpeed * dt / kernel_->h();
   checkDomain(time);
 }
 
 void IsphSolver::checkDomain(const Time& time) const {
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
+  for (std::size_t a = 0; a < ps_.ownMaterial(); ++a) {  // (parallel: the own; an error ends every rank)
     const Vec3& x = ps_.cloud.positions[a];
     const Vec3& u = ps_.cloud.U[a];
     if (!x.allFinite() || !u.allFinite() || !std::isfinite(ps_.cloud.p[a])) {
@@ -562,18 +590,18 @@ void IsphSolver::checkDomain(const Time& time) const {
 
 void IsphSolver::write(Time& time) {
   auto t = timer_.scope("output");
-  StagedDirectory dir(time.timePath());
+  StagedDirectory dir(time.timePath());  // (parallel: processor<rank>/<time>, the own particles)
   FieldWriteOptions options{time.settings().writeFormat, time.settings().writePrecision, ""};
-  writeCloud(dir.path(), time.timeName(), ps_.cloud, options);
+  writeCloud(dir.path(), time.timeName(), distributed_ ? ownedCloud(ps_) : ps_.cloud, options);
   std::vector<label> flags(freeSurface_->flags().begin(), freeSurface_->flags().end());
   flags.resize(ps_.size(), 0);
   options.location = fmt::format("{}/lagrangian/{}", time.timeName(), ps_.cloud.name);
-  writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", flags, options);
+  writeField(dir.path() / "lagrangian" / ps_.cloud.name / "freeSurface", ownedValues(ps_, flags), options);
   if (const auto* tau = deviatoricStress()) {
-    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", *tau, options);
+    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "tau", ownedValues(ps_, *tau), options);
   }
   if (const auto* friction = wallFriction()) {
-    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "wallFriction", *friction, options);
+    writeField(dir.path() / "lagrangian" / ps_.cloud.name / "wallFriction", ownedValues(ps_, *friction), options);
   }
   if (wcsph_) writeField(dir.path() / "lagrangian" / ps_.cloud.name / "rho", wcsph_->density(), options);
   writeStepState(dir.path(), currentState(), options.format);

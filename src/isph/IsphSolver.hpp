@@ -45,6 +45,7 @@
 #include "isph/WallFriction.hpp"
 #include "isph/TimeStepControl.hpp"
 #include "isph/WeaklyCompressibleStep.hpp"
+#include "isph/parallel/DistributedParticles.hpp"
 
 namespace isph {
 
@@ -74,7 +75,11 @@ class IsphSolver {
  public:
   // Reads the cloud of the start time, constant/materialProperties, constant/g,
   // system/isphSchemes and system/isphSolution; logs the active models and schemes.
-  explicit IsphSolver(const Time& time);
+  // `parallel`: a run on the MPI ranks of mpirun -np N (doc/parallel.md): this rank's part
+  // of the particles, from processor<rank>/ or decomposed in memory; every loop over the
+  // particles runs over this rank's own and ghost particles, the linear systems over all
+  // ranks, every global figure is a reduction, and write() writes processor<rank>/<time>.
+  explicit IsphSolver(const Time& time, bool parallel = false);
   ~IsphSolver();
 
   // The time step for the next step (adjustTimeStep), with the limit that set it.
@@ -101,6 +106,8 @@ class IsphSolver {
   // "AMG hierarchies built for p: N of M solves" (and for U), for the end of the log.
   std::string preconditionerSummary() const;
   const Vec3& gravity() const { return g_; }
+  // A parallel run's decomposition (null in a serial run).
+  const DistributedParticles* distributed() const { return distributed_.get(); }
 
  private:
   void checkDomain(const Time& time) const;
@@ -156,6 +163,7 @@ class IsphSolver {
   long tauStep_ = -1;
   std::vector<SymmTensor> tau_;
   PhaseTimer timer_;
+  std::unique_ptr<DistributedParticles> distributed_;  // parallel: doc/parallel.md (null: serial)
 };
 
 }  // namespace isph

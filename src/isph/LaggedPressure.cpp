@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "isph/parallel/GhostExchange.hpp"
+
 namespace isph {
 
 std::vector<double> smoothedPressure(const ParticleSystem& ps, const Kernel& kernel,
@@ -30,6 +32,7 @@ std::vector<double> smoothedPressure(const ParticleSystem& ps, const Kernel& ker
       next[a] = sum / weight;
     }
     std::swap(p, next);
+    exchangeGhosts(ps, p);  // parallel: the next pass reads the ghosts'
   }
   return p;
 }

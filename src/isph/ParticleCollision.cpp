@@ -3,6 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
+
 namespace isph {
 
 CollisionResult separateCloseParticles(ParticleSystem& ps, double distance) {
@@ -31,7 +34,7 @@ CollisionResult separateCloseParticles(ParticleSystem& ps, double distance) {
       if (approach < 0) du[a] -= share * approach * e;
       contact = true;
     }
-    moved += contact;
+    moved += contact && a < ps.ownMaterial();  // (parallel: the own)
   }
 #pragma omp parallel for schedule(static)
   for (long ia = 0; ia < n; ++ia) {
@@ -39,7 +42,9 @@ CollisionResult separateCloseParticles(ParticleSystem& ps, double distance) {
     c.positions[a] += dx[a];
     c.U[a] += du[a];
   }
-  result.moved = static_cast<std::size_t>(moved);
+  exchangeGhosts(ps, c.positions);  // parallel
+  exchangeGhosts(ps, c.U);
+  result.moved = sumOverRanks(static_cast<std::size_t>(moved));
   return result;
 }
 

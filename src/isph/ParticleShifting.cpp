@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "isph/MaterialGradient.hpp"
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -61,10 +63,10 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
     const double len = dr.norm();
     if (len > maxShift) {
       dr *= maxShift / len;
-      ++capped;
+      capped += ua < ps.ownMaterial();
     }
     shift[ua] = dr;
-    largest = std::max(largest, std::min(len, maxShift) / ps.dx);
+    if (ua < ps.ownMaterial()) largest = std::max(largest, std::min(len, maxShift) / ps.dx);  // (parallel: the own)
   }
 
   // Taylor correction of u and p, then move. The gradients are over material neighbours
@@ -101,7 +103,10 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
     c.U[ua] = Unew[ua];
     c.p[ua] = pnew[ua];
   }
-  return {largest, static_cast<std::size_t>(capped)};
+  exchangeGhosts(ps, c.positions);  // parallel: the collisions read them at ghosts
+  exchangeGhosts(ps, c.U);
+  exchangeGhosts(ps, c.p);
+  return {maxOverRanks(largest), sumOverRanks(static_cast<std::size_t>(capped))};
 }
 
 }  // namespace isph

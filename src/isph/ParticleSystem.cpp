@@ -7,6 +7,8 @@
 #include <numeric>
 
 #include "core/Error.hpp"
+#include "parallel/Reduce.hpp"
+#include "sph/neighbours/NearestPoints.hpp"
 
 namespace isph {
 
@@ -54,7 +56,9 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
   ps.nMaterial = static_cast<std::size_t>(std::count(c.kind.begin(), c.kind.end(), label(ParticleKind::material)));
   ps.nWall = static_cast<std::size_t>(std::count(c.kind.begin(), c.kind.end(), label(ParticleKind::wall)));
   ps.nDummy = c.size() - ps.nMaterial - ps.nWall;
-  if (ps.nMaterial == 0) fatalError(fmt::format("cloud '{}' has no material particles: nothing to simulate", c.name));
+  if (sumOverRanks(ps.nMaterial) == 0) {  // (a rank of a parallel run may hold none)
+    fatalError(fmt::format("cloud '{}' has no material particles: nothing to simulate", c.name));
+  }
 
   // Densities and volumes; walls take the mass-weighted mean density of the materials.
   const std::size_t n = c.size();
@@ -68,7 +72,7 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
     mass += c.mass[a];
     volume += ps.volume[a];
   }
-  ps.wallRho = mass / volume;
+  ps.wallRho = sumOverRanks(mass) / sumOverRanks(volume);
   const double wallArea = ps.dimension == 3 ? ps.dx * ps.dx * ps.dx : ps.dx * ps.dx;
   for (std::size_t a = ps.nMaterial; a < n; ++a) {
     ps.rho[a] = ps.wallRho;
@@ -76,37 +80,34 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
   }
   ps.latticeSum = idealLatticeSum(kernel, ps.dx, c.properties.lattice, ps.dimension);
 
-  // Each dummy particle extends the nearest wall particle (walls do not move: done once).
+  // Each dummy particle extends the nearest wall particle (walls do not move: done once);
+  // equally near walls are told apart by origId, so that a rank of a parallel run that holds
+  // a dummy and its wall finds the same one (src/isph/parallel).
   ps.parentWall.assign(n, -1);
   if (ps.nWall > 0 && ps.nDummy > 0) {
-    std::vector<Vec3> walls(c.positions.begin() + static_cast<long>(ps.nMaterial),
-                            c.positions.begin() + static_cast<long>(ps.nMaterial + ps.nWall));
-
+    const auto first = [&](std::size_t i) { return c.positions.begin() + static_cast<long>(i); };
+    const std::vector<Vec3> walls(first(ps.nMaterial), first(ps.dummyBegin()));
+    const std::vector<label> wallIds(c.origId.begin() + static_cast<long>(ps.nMaterial),
+                                     c.origId.begin() + static_cast<long>(ps.dummyBegin()));
+    const std::vector<Vec3> dummies(first(ps.dummyBegin()), c.positions.end());
     const double radius = 2.0 * kernel.supportRadius();  // reaches the corners of the dummy layers
-    const auto searchKernel = makeKernel("WendlandC2", radius / 2.0, ps.dimension);
-    std::vector<Vec3> points = walls;
-    points.insert(points.end(), c.positions.begin() + static_cast<long>(ps.dummyBegin()), c.positions.end());
-    NeighbourList list;
-    list.build(points, *searchKernel);
+    const std::vector<int> parent = nearestPoints(walls, wallIds, dummies, radius, ps.dimension);
     for (std::size_t d = 0; d < ps.nDummy; ++d) {
-      const std::size_t row = ps.nWall + d;
-      double best = 1e300;
-      int parent = -1;
-      for (long k = list.start[row]; k < list.start[row + 1]; ++k) {
-        const int b = list.index[static_cast<std::size_t>(k)];
-        if (static_cast<std::size_t>(b) >= ps.nWall) continue;
-        const double r = (points[row] - points[static_cast<std::size_t>(b)]).squaredNorm();
-        if (r < best) {
-          best = r;
-          parent = b;
-        }
-      }
-      if (parent < 0) {
+      if (parent[d] < 0) {
         fatalError(fmt::format("cloud '{}': dummy particle at ({:.4g} {:.4g}) has no wall particle within {:.3g} m",
-                               c.name, points[row].x(), points[row].y(), radius));
+                               c.name, dummies[d].x(), dummies[d].y(), radius));
       }
-      ps.parentWall[ps.dummyBegin() + d] = static_cast<int>(ps.nMaterial) + parent;
+      ps.parentWall[ps.dummyBegin() + d] = static_cast<int>(ps.nMaterial) + parent[d];
     }
+  }
+}
+
+void markFrictionWalls(ParticleSystem& ps) {
+  ps.frictionWall.assign(ps.size(), 0);
+  for (std::size_t b = ps.wallBegin(); b < ps.size(); ++b) {
+    const std::size_t w = ps.isWall(b) ? b : static_cast<std::size_t>(ps.parentWall[b]);
+    const label patch = ps.cloud.patch[w];
+    ps.frictionWall[b] = patch >= 0 && ps.cloud.properties.patches[static_cast<std::size_t>(patch)].frictionAngle > 0;
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/Types.hpp"
 #include "isph/materials/MaterialTable.hpp"
+#include "parallel/Halo.hpp"
 #include "particles/ParticleCloud.hpp"
 #include "sph/kernels/Kernel.hpp"
 #include "sph/neighbours/NeighbourList.hpp"
@@ -31,6 +32,30 @@ struct ParticleSystem {
 
   NeighbourList neighbours;
 
+  // A parallel run (doc/parallel.md, src/isph/parallel): each kind's particles are this
+  // rank's own first, then its ghosts, copies of other ranks' particles within the kernel
+  // support: material [0, nOwnedMaterial) own and [nOwnedMaterial, nMaterial) ghosts, walls
+  // [wallBegin(), wallBegin() + nOwnedWall) own, dummies likewise. A loop over the material
+  // computes the ghosts' entries too (from their cut-off neighbourhoods: wrong), and
+  // exchangeGhosts (isph/parallel/GhostExchange.hpp) then gives them their owners' values before
+  // a pair loop reads them. The linear systems hold the own material particles' rows, numbered
+  // from firstRow over all ranks (globalRow). In a serial run everything is owned, firstRow 0.
+  std::size_t nOwnedMaterial = 0, nOwnedWall = 0, nOwnedDummy = 0;  // (set with halo)
+  long firstRow = 0;
+  std::vector<long> ghostRow;    // the global row of each ghost material particle
+  const Halo* halo = nullptr;    // null in a serial run
+  // The own particles of each kind (all of them in a serial run).
+  std::size_t ownMaterial() const { return halo ? nOwnedMaterial : nMaterial; }
+  std::size_t ownWall() const { return halo ? nOwnedWall : nWall; }
+  std::size_t ownDummy() const { return halo ? nOwnedDummy : nDummy; }
+  long globalRow(std::size_t a) const {
+    return a < ownMaterial() ? firstRow + static_cast<long>(a) : ghostRow[a - nOwnedMaterial];
+  }
+  bool isOwned(std::size_t a) const {
+    return !halo || a < nOwnedMaterial || (a >= wallBegin() && a < wallBegin() + nOwnedWall) ||
+           (a >= dummyBegin() && a < dummyBegin() + nOwnedDummy);
+  }
+
   std::size_t size() const { return cloud.size(); }
   bool isMaterial(std::size_t a) const { return a < nMaterial; }
   bool isWall(std::size_t a) const { return a >= nMaterial && a < nMaterial + nWall; }
@@ -42,6 +67,10 @@ struct ParticleSystem {
 // Orders the cloud material | wall | dummy, sets densities, volumes, the lattice sum and the
 // dummy-to-wall association. FatalError if the cloud has no material particles.
 void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials, const Kernel& kernel);
+
+// Marks the wall and dummy particles of patches with a friction angle (ps.frictionWall; a
+// dummy particle by its wall particle's patch).
+void markFrictionWalls(ParticleSystem& ps);
 
 // Reorders the material particles by cell so that neighbours sit close in memory. Returns
 // the permutation of the material particles, order[new] = old, for the callers' own arrays.

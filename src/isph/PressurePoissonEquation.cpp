@@ -7,6 +7,9 @@
 
 #include "core/Log.hpp"
 #include "isph/WallBoundaryPressure.hpp"
+#include "isph/parallel/ClosedRegions.hpp"
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -78,6 +81,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     }
     if (!wall && theta > ps.latticeSum) flags[a] = 0;
   }
+  exchangeGhosts(ps, flags);  // parallel: a ghost's from its whole neighbourhood
 
   {
     std::vector<char> touchesDirichlet(nMat, 0);
@@ -92,7 +96,8 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
       }
     }
     const std::vector<char> dirichlet(flags);  // before pinning: the groups are of these unknowns
-    const int pinned = pinClosedRegions(ps, touchesDirichlet, flags, dirichlet);
+    const int pinned = ps.halo ? pinClosedRegionsAcrossRanks(ps, touchesDirichlet, flags, dirichlet)  // parallel
+                               : pinClosedRegions(ps, touchesDirichlet, flags, dirichlet);
     if (pinned > 0) {
       info("    PPE: {} closed region(s) without a free surface: pressure pinned to 0 at one particle each", pinned);
     }
@@ -105,8 +110,9 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   // the size changed every step and every solve built its hierarchy afresh.
   dirichlet_.assign(flags.begin(), flags.end());
 
-  const long nRows = static_cast<long>(nMat);
-  system_.firstRow = 0;
+  // (parallel: the rows of the own material particles, numbered over all ranks: ps.globalRow)
+  const long nRows = static_cast<long>(ps.ownMaterial());
+  system_.firstRow = ps.firstRow;
   system_.rowStart.assign(static_cast<std::size_t>(nRows) + 1, 0);
   for (long r = 0; r < nRows; ++r) {
     const auto a = static_cast<std::size_t>(r);
@@ -200,7 +206,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
         if (ps.isMaterial(b)) {
           diagonal -= C;
           if (!flags[b]) {
-            system_.columns[pos] = static_cast<long>(b);
+            system_.columns[pos] = ps.globalRow(b);
             system_.values[pos] = C;
             ++pos;
           } else if (base) {
@@ -220,7 +226,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
           thetaStar += ps.volume[b] * nl.W[kk];  // the wall moves with a: no relative motion
         }
       }
-      system_.columns[diag] = static_cast<long>(r);
+      system_.columns[diag] = ps.globalRow(a);
       system_.values[diag] = diagonal;
       // The reference of the density-invariant source: the full-lattice sum θ₀ inside. Where
       // the support reaches the free surface or a wall, the present sum θⁿ (a cut support must
@@ -251,16 +257,17 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   // dominates the residual: s p_a = s p_D, with p_D = 0, or −pⁿ_a for the increment.
   double diagonalSum = 0;
   long unknowns = 0;
-  for (std::size_t a = 0; a < nMat; ++a) {
+  for (std::size_t a = 0; a < static_cast<std::size_t>(nRows); ++a) {
     if (flags[a]) continue;
     diagonalSum += system_.values[static_cast<std::size_t>(system_.rowStart[a])];
     ++unknowns;
   }
+  diagonalSum = sumOverRanks(diagonalSum), unknowns = sumOverRanks(unknowns);  // parallel: all ranks'
   const double scale = unknowns > 0 && diagonalSum > 0 ? diagonalSum / static_cast<double>(unknowns) : 1.0;
-  for (std::size_t a = 0; a < nMat; ++a) {
+  for (std::size_t a = 0; a < static_cast<std::size_t>(nRows); ++a) {
     if (!flags[a]) continue;
     const auto at = static_cast<std::size_t>(system_.rowStart[a]);
-    system_.columns[at] = static_cast<long>(a);
+    system_.columns[at] = ps.globalRow(a);
     system_.values[at] = scale;
     system_.rhs[a] = base ? -scale * (*base)[a] : 0.0;
   }
@@ -274,17 +281,19 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   auto& p = ps.cloud.p;
-  std::vector<double> x(p.begin(), p.begin() + static_cast<long>(ps.nMaterial));  // warm start
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  const std::size_t nRows = ps.ownMaterial();  // (parallel: the own rows)
+  std::vector<double> x(p.begin(), p.begin() + static_cast<long>(nRows));  // warm start
+  for (std::size_t a = 0; a < nRows; ++a) {
     if (dirichlet_[a]) x[a] = 0.0;
   }
   SolverPerformance perf = solver_->solve(system_, x);
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  for (std::size_t a = 0; a < nRows; ++a) {
     p[a] = dirichlet_[a] ? 0.0 : x[a];
     // Neither soil nor a breaking water front carries tension; SPH suction at a stretching
     // front is also what launches the tensile instability.
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
   }
+  exchangeGhosts(ps, p);  // parallel: the wall pressure reads it at ghosts
   updateWallPressure(ps, ustar, g, dt);
   return perf;
 }
@@ -300,17 +309,20 @@ SolverPerformance PressurePoissonEquation::solveIncrement(ParticleSystem& ps, co
   assemble(ps, kernel, L, ustar, freeSurface, g, dt, &base);
   assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::vector<double> x(ps.nMaterial, 0.0);  // warm start: no change (the Dirichlet rows: their value)
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  const std::size_t nRows = ps.ownMaterial();  // (parallel: the own rows)
+  std::vector<double> x(nRows, 0.0);  // warm start: no change (the Dirichlet rows: their value)
+  for (std::size_t a = 0; a < nRows; ++a) {
     if (dirichlet_[a]) x[a] = -base[a];
   }
   SolverPerformance perf = solver_->solve(system_, x);
   increment.assign(ps.nMaterial, 0.0);
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  for (std::size_t a = 0; a < nRows; ++a) {
     p[a] = dirichlet_[a] ? 0.0 : base[a] + x[a];
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
     increment[a] = p[a] - base[a];
   }
+  exchangeGhosts(ps, p);  // parallel: Eq. 11 reads both at ghosts
+  exchangeGhosts(ps, increment);
   return perf;
 }
 

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "isph/WallBoundaryPressure.hpp"
+#include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {
 
@@ -62,6 +63,7 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
     const double sigma = pw + 0.5 * (rhoSum / sum) * pressing * ps.dx;
     share[w] = tanDelta * sigma * area / sum;
   }
+  exchangeGhosts(ps, share);  // parallel: a ghost wall's share from its whole neighbourhood
 
   const long nMat = static_cast<long>(ps.nMaterial);
 #pragma omp parallel for schedule(static)
@@ -128,6 +130,7 @@ std::vector<Vec3> WallFriction::wallTraction(const ParticleSystem& ps, const std
     }
     if (sum > 0) share[a] = onMaterial[a] / sum;
   }
+  exchangeGhosts(ps, share);  // parallel
   const double area = std::pow(ps.dx, ps.dimension - 1);
 #pragma omp parallel for schedule(static)
   for (long iw = static_cast<long>(ps.wallBegin()); iw < static_cast<long>(ps.dummyBegin()); ++iw) {

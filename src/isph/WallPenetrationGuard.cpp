@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
+
 namespace isph {
 
 WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
   WallGuardResult result;
-  if (ps.nWall == 0) return result;
+  if (!anyRank(ps.nWall > 0)) return result;
   auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const double dmin = distance * ps.dx;
@@ -30,7 +33,8 @@ WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
     if (best == 1e300) continue;
     const Vec3& normal = c.normal[wall];
     const double dn = (c.positions[ua] - c.positions[wall]).dot(normal);
-    if (dn < 0) {
+    const bool own = ua < ps.ownMaterial();  // (parallel: count the own)
+    if (dn < 0 && own) {
       ++crossed;
       first = std::max(first, -a - 1);  // the lowest index (max of negatives)
     }
@@ -38,11 +42,14 @@ WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
       c.positions[ua] += (dmin - dn) * normal;
       const double un = c.U[ua].dot(normal);
       if (un < 0) c.U[ua] -= un * normal;
-      ++moved;
+      moved += own;
     }
   }
-  result.moved = static_cast<std::size_t>(moved);
-  result.crossed = static_cast<std::size_t>(crossed);
+  exchangeGhosts(ps, c.positions);  // parallel: the step's last move
+  exchangeGhosts(ps, c.U);
+  result.moved = sumOverRanks(static_cast<std::size_t>(moved));
+  result.crossed = sumOverRanks(static_cast<std::size_t>(crossed));
+  if (crossed == 0 && result.crossed > 0) result.firstCrossing = "on another rank";
   if (crossed > 0) {
     const auto a = static_cast<std::size_t>(-first - 1);
     result.firstCrossing = fmt::format("particle {} (origId {}) was behind a wall and was put back at ({:.4g} {:.4g} {:.4g})",

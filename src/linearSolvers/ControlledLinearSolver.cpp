@@ -3,13 +3,27 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/Error.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
+double ControlledLinearSolver::residual(const SparseSystem& A, const std::vector<double>& x, double bNorm,
+                                       SolverPerformance&) {
+  return residualNorm(A, x) / bNorm;
+}
+
 SolverPerformance ControlledLinearSolver::solveTo(const SparseSystem& A, std::vector<double>& x, double relTol) {
-  checkSparseSystem(A);
+  release();  // (nothing may survive from a solve that ended in an error)
+  const bool distributed = distributedRun();
+  if (distributed) {
+    checkDistributedSparseSystem(A);
+  } else {
+    checkSparseSystem(A);
+  }
   const auto n = static_cast<std::size_t>(A.nRows());
   if (x.empty()) x.assign(n, 0.0);
   if (x.size() != n) {
@@ -21,13 +35,16 @@ SolverPerformance ControlledLinearSolver::solveTo(const SparseSystem& A, std::ve
   SolverPerformance perf;
   perf.solverName = name();
   perf.field = controls_.field;
-  if (norm2(A.rhs) == 0.0) {  // b = 0: the solution is x = 0
+  double bNorm = norm2(A.rhs);
+  if (distributed) bNorm = std::sqrt(sumOverRanks(bNorm * bNorm));
+  if (bNorm == 0.0) {  // b = 0: the solution is x = 0
     std::fill(x.begin(), x.end(), 0.0);
     perf.converged = true;
     return perf;
   }
+  bNorm = std::max(bNorm, std::numeric_limits<double>::min());
 
-  perf.initialResidual = normalisedResidual(A, x);
+  perf.initialResidual = residual(A, x, bNorm, perf);
   const double target = std::max(controls_.tolerance, relTol * perf.initialResidual);
   perf.finalResidual = perf.initialResidual;
   perf.converged = perf.initialResidual <= target;
@@ -37,10 +54,11 @@ SolverPerformance ControlledLinearSolver::solveTo(const SparseSystem& A, std::ve
        ++pass) {
     const int used = iterate(A, x, target, controls_.maxIter - perf.iterations, perf);
     perf.iterations += used;
-    perf.finalResidual = normalisedResidual(A, x);
+    perf.finalResidual = residual(A, x, bNorm, perf);
     perf.converged = perf.finalResidual <= target;  // false for NaN
     if (used == 0) break;                           // no progress: restarting would not help
   }
+  release();
   return perf;
 }
 

@@ -4,7 +4,8 @@
 // it already meets the tolerance, let the concrete solver iterate towards the target
 // max(tolerance, relTol * r_initial), then judge the result by our own residual. If a
 // solver stops early on its own (recursive) residual estimate, it is restarted from its
-// result, at most twice, within the remaining iterations.
+// result, at most twice, within the remaining iterations. In a parallel run every rank calls
+// solve() with its block of the system (SparseSystem.hpp), and the norms are global.
 #include "linearSolvers/LinearSolver.hpp"
 
 namespace isph {
@@ -24,6 +25,12 @@ class ControlledLinearSolver : public LinearSolver {
   // the iterations used and add the times to `performance`.
   virtual int iterate(const SparseSystem& A, std::vector<double>& x, double target, int maxIter,
                       SolverPerformance& performance) = 0;
+  // ||b - A x|| / bNorm, the residual the solve is judged by (bNorm = ||b||, > 0): our own
+  // CSR product on one rank. A distributed solver overrides it for a distributed system.
+  virtual double residual(const SparseSystem& A, const std::vector<double>& x, double bNorm,
+                          SolverPerformance& performance);
+  // The solve of A is over: drop what was kept for it.
+  virtual void release() {}
 
  private:
   SolverPerformance solveTo(const SparseSystem& A, std::vector<double>& x, double relTol);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/dictionary/Dictionary.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -44,6 +45,12 @@ std::unique_ptr<LinearSolver> makeLinearSolver(const Dictionary& solverDict,
   auto solver = LinearSolverRegistry::create(
       name, "linear solver", locationOf(solverDict, "solver"), solverDict, controls);
   solverDict.checkKeywords();
+  if (distributedRun() && !solver->distributed()) {
+    fatalIOError(locationOf(solverDict, "solver"),
+                 fmt::format("the {} solver runs on one rank; a parallel run ({} ranks) needs a hypre solver "
+                             "(PCG, GMRES or BiCGSTAB) for {}",
+                             solver->name(), nRanks(), field));
+  }
   return solver;
 }
 

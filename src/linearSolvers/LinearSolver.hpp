@@ -62,6 +62,8 @@ class LinearSolver {
   // The unknowns have been renumbered (the particles reordered): a kept preconditioner would
   // precondition a permuted matrix, so the next solve builds afresh whatever reuseSetup says.
   virtual void rebuildPreconditionerForNextSolve() {}
+  // Whether it solves a system distributed over MPI ranks (SparseSystem.hpp): the hypre solvers.
+  virtual bool distributed() const { return false; }
 };
 
 // The selection table: solvers register a factory under the name users write after `solver`.
@@ -69,7 +71,8 @@ using LinearSolverRegistry = Registry<LinearSolver, const Dictionary&, const Lin
 
 // The solver named by `solver` in solverDict (default PCG), configured from the same
 // dictionary; warns about keywords it did not use. FatalError naming the file and line for an
-// unknown solver or preconditioner, or for a hypre solver without MPI or on several ranks.
+// unknown solver or preconditioner, for a hypre solver without MPI, or in a parallel run for a
+// solver that runs on one rank only (the Eigen solvers).
 std::unique_ptr<LinearSolver> makeLinearSolver(const Dictionary& solverDict,
                                                const std::string& field);
 

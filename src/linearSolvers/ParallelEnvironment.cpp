@@ -4,12 +4,21 @@
 #include <mpi.h>
 
 #include "core/Error.hpp"
+#include "core/ParallelRun.hpp"
 
 namespace isph {
 
 namespace {
 bool hypreInitialised = false;
+
+void abortAllRanks(int status) { MPI_Abort(MPI_COMM_WORLD, status); }
+
+int maxOverAllRanks(int value) {
+  int out = value;
+  MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return out;
 }
+}  // namespace
 
 ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
   int initialised = 0;
@@ -22,6 +31,7 @@ ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
     if (MPI_Init(&argc, &argv) != MPI_SUCCESS) fatalError("ParallelEnvironment: MPI_Init failed");
     ownsMpi_ = true;
   }
+  setParallelRun({.rank = rank(), .nProcs = nProcs(), .abort = abortAllRanks, .maxOverRanks = maxOverAllRanks});
   if (!hypreInitialised) {
     HYPRE_Init();
     hypreInitialised = true;
@@ -34,7 +44,10 @@ ParallelEnvironment::~ParallelEnvironment() {
     HYPRE_Finalize();
     hypreInitialised = false;
   }
-  if (ownsMpi_ && active()) MPI_Finalize();
+  if (ownsMpi_ && active()) {
+    MPI_Finalize();
+    setParallelRun({});
+  }
 }
 
 bool ParallelEnvironment::active() {

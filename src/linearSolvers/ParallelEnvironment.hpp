@@ -8,8 +8,8 @@
 //   }
 //
 // RAII and idempotent: only the instance that initialised MPI (or hypre) finalises it, so
-// a second instance, or one created after someone else's MPI_Init, is harmless. One rank
-// for now: the hypre solvers refuse to run on more (see makeLinearSolver).
+// a second instance, or one created after someone else's MPI_Init, is harmless. It also tells
+// the core which rank this is (ParallelRun.hpp: the log is rank 0's, an error ends every rank).
 namespace isph {
 
 class ParallelEnvironment {

@@ -2,14 +2,19 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/Error.hpp"
+#include "parallel/GlobalNumbering.hpp"
 
 namespace isph {
 
-void checkSparseSystem(const SparseSystem& A) {
+namespace {
+
+// The checks that do not depend on where the columns lie: sizes, rowStart, finite values.
+void checkShape(const SparseSystem& A) {
   const int n = A.nRows();
   if (A.rowStart.empty() || A.rowStart.front() != 0) {
     fatalError("sparse system: rowStart must have nRows + 1 entries and start at 0");
@@ -24,12 +29,30 @@ void checkSparseSystem(const SparseSystem& A) {
     fatalError(fmt::format("sparse system: {} rows but the right-hand side has {} entries", n,
                            A.rhs.size()));
   }
-  // lastSeen[c] == i marks column c as used in row i: repeated columns are caught in O(nnz).
-  std::vector<int> lastSeen(static_cast<std::size_t>(n), -1);
   for (int i = 0; i < n; ++i) {
     if (A.rowStart[i + 1] < A.rowStart[i]) {
       fatalError(fmt::format("sparse system: rowStart decreases at row {}", A.firstRow + i));
     }
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      if (!std::isfinite(A.values[k])) {
+        fatalError(fmt::format("sparse system: A({}, {}) = {} is not finite", A.firstRow + i,
+                               A.columns[k], A.values[k]));
+      }
+    }
+    if (!std::isfinite(A.rhs[i])) {
+      fatalError(fmt::format("sparse system: b({}) = {} is not finite", A.firstRow + i, A.rhs[i]));
+    }
+  }
+}
+
+}  // namespace
+
+void checkSparseSystem(const SparseSystem& A) {
+  checkShape(A);
+  const int n = A.nRows();
+  // lastSeen[c] == i marks column c as used in row i: repeated columns are caught in O(nnz).
+  std::vector<int> lastSeen(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < n; ++i) {
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
       const long c = A.columns[k] - A.firstRow;
       if (c < 0 || c >= n) {
@@ -42,13 +65,30 @@ void checkSparseSystem(const SparseSystem& A) {
             fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, A.columns[k]));
       }
       lastSeen[c] = i;
-      if (!std::isfinite(A.values[k])) {
-        fatalError(fmt::format("sparse system: A({}, {}) = {} is not finite", A.firstRow + i,
-                               A.columns[k], A.values[k]));
-      }
     }
-    if (!std::isfinite(A.rhs[i])) {
-      fatalError(fmt::format("sparse system: b({}) = {} is not finite", A.firstRow + i, A.rhs[i]));
+  }
+}
+
+void checkDistributedSparseSystem(const SparseSystem& A) {
+  checkShape(A);
+  const GlobalNumbering rows = GlobalNumbering::of(A.nRows());
+  if (A.firstRow != rows.first) {
+    fatalError(fmt::format("distributed sparse system: this rank's rows start at {}, but the ranks before it "
+                           "hold {} rows",
+                           A.firstRow, rows.first));
+  }
+  std::vector<long> columns;
+  for (int i = 0; i < A.nRows(); ++i) {
+    columns.assign(A.columns.begin() + A.rowStart[i], A.columns.begin() + A.rowStart[i + 1]);
+    std::sort(columns.begin(), columns.end());
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      if (columns[k] < 0 || columns[k] >= rows.nGlobal) {
+        fatalError(fmt::format("distributed sparse system: row {} has column {} outside the rows [0, {})",
+                               A.firstRow + i, columns[k], rows.nGlobal));
+      }
+      if (k > 0 && columns[k] == columns[k - 1]) {
+        fatalError(fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, columns[k]));
+      }
     }
   }
 }

@@ -1,11 +1,13 @@
 #pragma once
 // A square sparse linear system A x = b in CSR form, holding rows [firstRow, firstRow + nRows)
-// of a global numbering (one rank for now; the global numbering keeps an MPI decomposition
-// possible later). The pressure Poisson equation assembles A = -L, which has a positive
+// of a global numbering. The pressure Poisson equation assembles A = -L, which has a positive
 // diagonal and non-positive off-diagonals (numerics.md §1), and b = -S.
 //
 // Within a row, column indices must be distinct (the order is free). On one rank every
-// column lies in [firstRow, firstRow + nRows).
+// column lies in [firstRow, firstRow + nRows). In a parallel run (doc/parallel.md) each rank
+// holds its own rows only, as one block of the global numbering (GlobalNumbering: rank r's
+// block follows rank r-1's), and its columns may be any rank's rows; only the hypre solvers
+// take such a system.
 #include <vector>
 
 namespace isph {
@@ -25,6 +27,9 @@ struct SparseSystem {
 // FatalError when the arrays do not describe a square CSR system (sizes, ranges, repeated
 // columns in a row, non-finite values). O(nnz); every solver calls it before solving.
 void checkSparseSystem(const SparseSystem& A);
+// The same for this rank's block of a distributed system (collective): the blocks follow one
+// another from row 0, and every column is a row of some rank.
+void checkDistributedSparseSystem(const SparseSystem& A);
 
 // y = A x (local rows; x is indexed by local row, x[c - firstRow]).
 void multiply(const SparseSystem& A, const std::vector<double>& x, std::vector<double>& y);

@@ -71,6 +71,10 @@ void writeCloud(const std::filesystem::path& timeDir, const std::string& timeNam
   writeFileAtomic(dir / propertiesFile, propertiesText(cloud.properties, o.location));
 }
 
+CloudProperties readCloudProperties(const std::filesystem::path& timeDir, const std::string& name) {
+  return readProperties(timeDir / "lagrangian" / name / propertiesFile);
+}
+
 ParticleCloud readCloud(const std::filesystem::path& timeDir, const std::string& name) {
   const std::filesystem::path dir = timeDir / "lagrangian" / name;
   if (!std::filesystem::is_directory(dir)) {

@@ -17,4 +17,7 @@ void writeCloud(const std::filesystem::path& timeDir, const std::string& timeNam
 // Reads cloud `name` from `timeDir`; every field must be present and of equal length.
 ParticleCloud readCloud(const std::filesystem::path& timeDir, const std::string& name);
 
+// The cloud's cloudProperties alone (materials, patches, dimension, spacing, lattice).
+CloudProperties readCloudProperties(const std::filesystem::path& timeDir, const std::string& name);
+
 }  // namespace isph

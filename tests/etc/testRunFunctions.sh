@@ -263,19 +263,44 @@ check "a failing solver: stderr shows the last 20 lines of its log (step 12 on)"
     eval 'grep -qx "step 12" <<< "$err" && ! grep -qx "step 11" <<< "$err" && grep -qx "FATAL: diverged" <<< "$err"'
 check "a failing solver: the log has no progress" eval '! grep -q progress log.failingSolver'
 
+echo "== runParallel"
+# A stand-in for mpirun that logs how it was called and the threads each rank gets.
+printf '#!/bin/sh\necho "OMP_NUM_THREADS=$OMP_NUM_THREADS mpirun $*"\n' > "$apps/fakeMpirun"
+chmod +x "$apps/fakeMpirun"
+printf 'FoamFile { format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains  3;   // ranks\nmethod zoltan;\n' \
+    > system/decomposeParDict
+check "getNumberOfProcessors reads numberOfSubdomains [got '$(getNumberOfProcessors)']" \
+    test "$(getNumberOfProcessors)" = 3
+cores=$(nproc)
+msg=$(unset OMP_NUM_THREADS; ISPH_MPIRUN="$apps/fakeMpirun" runParallel -q isphLandslideFoam -case here)
+rc=$?
+check "runParallel returns 0 [got $rc]" test "$rc" = 0
+check "runParallel prints 'Running isphLandslideFoam on <dir>' [got '$msg']" \
+    test "$msg" = "Running isphLandslideFoam on $(pwd)"
+over=; [ 3 -le "$cores" ] || over=" --oversubscribe"
+threads=$(( cores / 3 )); [ "$threads" -ge 1 ] || threads=1
+check "runParallel runs mpirun -np 3 app -parallel args into log.isphLandslideFoam [got '$(cat log.isphLandslideFoam)']" \
+    test "$(cat log.isphLandslideFoam)" = "OMP_NUM_THREADS=$threads mpirun -np 3$over isphLandslideFoam -parallel -case here"
+ISPH_MPIRUN="$apps/fakeMpirun" OMP_NUM_THREADS=2 runParallel -q -o -np 1 -s one isphLandslideFoam > /dev/null
+check "runParallel -np 1 -s one keeps OMP_NUM_THREADS [got '$(cat log.isphLandslideFoam.one)']" \
+    test "$(cat log.isphLandslideFoam.one)" = "OMP_NUM_THREADS=2 mpirun -np 1 isphLandslideFoam -parallel"
+err=$(runParallel -np x isphLandslideFoam 2>&1)
+check "runParallel -np x is an error [got '$err']" grep -q "whole number" <<< "$err"
+rm -f system/decomposeParDict log.isphLandslideFoam*
+
 echo "== isTest/notTest"
 check "isTest finds -test" isTest a -test b
 check "notTest without -test" notTest a b
 
 echo "== cleanCase"
-mkdir -p 0.1 1 2e-05 100 0.orig postProcessing/probes VTK 0/uniform
+mkdir -p 0.1 1 2e-05 100 0.orig postProcessing/probes VTK 0/uniform processor0/0.1 processor1
 touch log.extra plot.png results.txt Allrun 0/U 0.1/U constant/transportProperties
 cleanCase
 for d in 0.1 1 2e-05 100; do
     check "cleanCase removes time directory $d/" test ! -e "$d"
 done
 check "cleanCase removes log.*" eval '! ls log.* >/dev/null 2>&1'
-for f in postProcessing VTK plot.png results.txt; do
+for f in postProcessing VTK plot.png results.txt processor0 processor1; do
     check "cleanCase removes $f" test ! -e "$f"
 done
 for f in 0/U 0.orig system/controlDict constant/transportProperties Allrun; do

@@ -9,6 +9,9 @@
 // shorter than the step and particles outside the scene (isph/StartupChecks.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
+// With -parallel it runs on the ranks of mpirun -np N (doc/parallel.md: decomposePar first, or
+// it decomposes the start time in memory; writes processor<i>/<time>; reconstructPar after);
+// rank 0 writes the log and the function objects' files.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -25,6 +28,8 @@
 #include "isph/StartupChecks.hpp"
 #include "isph/StepWithRetry.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
+#include "parallel/DecomposedCase.hpp"
+#include "parallel/Reduce.hpp"
 #include "postProcessing/functionObjects/FunctionObjectList.hpp"
 
 namespace {
@@ -34,16 +39,23 @@ const isph::ApplicationSpec spec{
     .description = "Incompressible SPH (projection method) for flow-like landslides and fluids.",
     .options = {},
     .arguments = {},
+    .parallel = true,
     .recovery = isph::CaseRecovery::allHosts,
 };
 
 void run(const isph::ArgList& args) {
-  isph::Time time(args.casePath());
+  const bool parallel = args.found("parallel");
+  if (!parallel && isph::nRanks() > 1) {
+    isph::fatalError(fmt::format("started on {} MPI ranks without -parallel: run mpirun -np {} {} -parallel (or "
+                                 "runParallel), or without mpirun for a serial run",
+                                 isph::nRanks(), isph::nRanks(), spec.name));
+  }
+  isph::Time time(args.casePath(), parallel ? isph::processorName(isph::thisRank()) : std::string());
   isph::Time::installSignalHandlers();
   isph::checkEndTime(time);
   isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
   std::optional<isph::Building> building(std::in_place, fmt::format("the solver from time {}", time.timeName()));
-  isph::IsphSolver solver(time);
+  isph::IsphSolver solver(time, parallel);
   building.reset();
   isph::checkWriteInterval(time, time.settings().adjustTimeStep ? solver.nextDeltaT(time).value()
                                                                 : time.settings().deltaT);
@@ -84,16 +96,18 @@ void run(const isph::ArgList& args) {
     // plus friction, PatchForces.hpp, and τ is not computed for it.)
     if (functions.anyDue(time)) {
       const auto* friction = solver.wallFriction();
+      const std::vector<char> owned = parallel ? isph::ownedMask(solver.particles()) : std::vector<char>();
       functions.execute(time, {.cloud = solver.particles().cloud, .tau = friction ? nullptr : solver.deviatoricStress(),
                                .kernel = &solver.kernel(), .neighbours = nullptr, .wallFriction = friction,
-                               .gravity = &solver.gravity()});
+                               .gravity = &solver.gravity(), .owned = parallel ? &owned : nullptr});
     }
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);
   }
   progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
-  isph::info("Mean neighbours per particle (last step): {:.1f}", solver.particles().neighbours.meanNeighbours());
+  isph::info("Mean neighbours per particle (last step): {:.1f}", isph::meanNeighbours(solver.particles()));
+  if (solver.distributed()) isph::info("{}", solver.distributed()->balanceSummary());
   if (const std::string amg = solver.preconditionerSummary(); !amg.empty()) isph::info("{}", amg);
   isph::info("Peak memory (resident): {:.1f} MB", isph::peakResidentMegabytes());
   // (ExecutionTime is CPU time, as in OpenFOAM: the sum over threads; benchmarks want the wall.)

@@ -9,6 +9,7 @@
 #include "core/app/Application.hpp"
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -27,6 +28,7 @@ const isph::ApplicationSpec spec{
                 {"cloud", "name", "the cloud (default: `cloud` in the dictionary, else particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 // What the forces of one time are computed from.
@@ -57,10 +59,11 @@ void run(const isph::ArgList& args) {
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
     isph::info("Time = {}", time.name);
-    const fs::path timeDir = args.casePath() / time.name;
     // A material that slides on the walls (the solver wrote its wall friction) exchanges no τ
     // with them (PatchForces.hpp): τ is read only for one that does not.
     const auto state = skipped.read(time, [&] {
+      const isph::DecomposedTime decomposed(args.casePath(), time.name, args.found("parallel"));
+      const fs::path& timeDir = decomposed.path();
       TimeState s{isph::readCloud(timeDir, cloudName), std::nullopt, std::nullopt};
       s.friction = isph::readWallFriction(timeDir, cloudName, s.cloud.size());
       if (!s.friction) s.tau = isph::readDeviatoricStress(timeDir, cloudName, s.cloud.size());

@@ -24,6 +24,7 @@
 #include "core/app/Application.hpp"
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "isph/Gravity.hpp"
@@ -40,6 +41,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -60,7 +62,8 @@ void run(const isph::ArgList& args) {
   s.g = isph::readGravity(args.casePath());
 
   const std::string cloudName = args.option("cloud").value_or("particles");
-  const auto all = isph::listTimes(args.casePath());
+  const bool decomposed = args.found("parallel");
+  const auto all = decomposed ? isph::decomposedTimes(args.casePath()) : isph::listTimes(args.casePath());
   if (all.empty()) isph::fatalError(fmt::format("no time directories in {}", args.casePath().string()));
   std::string referenceName = all.front().name;
   if (referenceTime) {
@@ -72,7 +75,8 @@ void run(const isph::ArgList& args) {
   }
   const auto times = isph::selectedTimes(args);
   if (times.empty()) return;
-  const isph::ParticleCloud start = isph::readCloud(args.casePath() / referenceName, cloudName);
+  const isph::ParticleCloud start =
+      isph::readCloud(isph::DecomposedTime(args.casePath(), referenceName, decomposed).path(), cloudName);
 
   std::string text = fmt::format("# p against rho |g| cos(beta) depth, rho {} kg/m^3, g ({} {} {}), normal ({} {} {})\n", s.rho,
                                  s.g.x(), s.g.y(), s.g.z(), s.normal.x(), s.normal.y(), s.normal.z());
@@ -81,7 +85,9 @@ void run(const isph::ArgList& args) {
   text += "# Time[s] l2[-] spread[-] maxDisplacement[m]\n";
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    const auto cloud = skipped.read(time, [&] {
+      return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, decomposed).path(), cloudName);
+    });
     if (!cloud) continue;
     const isph::LithostaticError e = isph::lithostaticError(*cloud, s);
     const double moved = isph::largestDisplacement(start, *cloud);

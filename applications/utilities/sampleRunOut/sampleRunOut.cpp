@@ -16,6 +16,7 @@
 #include "core/app/Application.hpp"
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -31,6 +32,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -53,7 +55,9 @@ void run(const isph::ArgList& args) {
                      "# Time[s] runOut[m]\n";
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    const auto cloud = skipped.read(time, [&] {
+      return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, args.found("parallel")).path(), cloudName);
+    });
     if (!cloud) continue;
     const auto front = isph::runOut(*cloud, s);
     if (!front) {

@@ -21,6 +21,7 @@
 #include "core/app/Application.hpp"
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
@@ -36,6 +37,7 @@ const isph::ApplicationSpec spec{
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 void run(const isph::ArgList& args) {
@@ -60,7 +62,9 @@ void run(const isph::ArgList& args) {
   const auto times = isph::selectedTimes(args);
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const auto cloud = skipped.read(time, [&] { return isph::readCloud(args.casePath() / time.name, cloudName); });
+    const auto cloud = skipped.read(time, [&] {
+      return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, args.found("parallel")).path(), cloudName);
+    });
     if (!cloud) continue;
     const isph::SurfaceProfile profile = isph::surfaceProfile(*cloud, s);
     std::string text = fmt::format("# free surface at time {}: highest material particle centre + dx/2 per bin\n", time.name);

@@ -14,6 +14,7 @@
 #include "core/app/SkippedTimes.hpp"
 #include "core/app/TimeOptions.hpp"
 #include "core/dictionary/Dictionary.hpp"
+#include "parallel/DecomposedCase.hpp"
 #include "postProcessing/vtk/CloudPolyData.hpp"
 #include "postProcessing/vtk/PvdCollection.hpp"
 #include "postProcessing/vtk/VtpFile.hpp"
@@ -31,6 +32,7 @@ const isph::ApplicationSpec spec{
                 {"cloud", "name", "the cloud to convert (default particles)"}},
     .arguments = {},
     .timeOptions = true,
+    .parallel = true,
 };
 
 // `-fields '(U p)'` (or a single word) as a list of names; errors name the option.
@@ -53,7 +55,10 @@ void run(const isph::ArgList& args) {
   std::vector<isph::PvdEntry> converted;
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
-    const auto cloud = skipped.read(time, [&] { return isph::readCloudFields(args.casePath() / time.name, cloudName, fields); });
+    const auto cloud = skipped.read(time, [&] {
+      const isph::DecomposedTime timeDir(args.casePath(), time.name, args.found("parallel"));
+      return isph::readCloudFields(timeDir.path(), cloudName, fields);
+    });
     if (!cloud) continue;
     const isph::Building building(fmt::format("the VTK file of time {} ({} particles)", time.name, cloud->cloud.size()));
     const auto poly = isph::cloudPolyData(*cloud, time.value, {.noWalls = args.found("noWalls")});

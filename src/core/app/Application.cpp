@@ -8,6 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/ParallelRun.hpp"
 #include "core/app/Banner.hpp"
 #include "core/app/OutOfMemory.hpp"
 #include "core/io/StagingRecovery.hpp"
@@ -30,6 +31,17 @@ void recoverCase(const ApplicationSpec& spec, const ArgList& args) {
   out << (spec.banner ? "\n" : "") << std::flush;
 }
 
+// The error on stderr (from the rank that met it, named in a parallel run), then the exit
+// status 1; in a parallel run every rank ends, or the others would wait for this one.
+int failed(const std::string& report) {
+  std::cout.flush();
+  const ParallelRun& run = parallelRun();
+  const std::string rank = run.nProcs > 1 ? fmt::format("[rank {}] ", run.rank) : std::string();
+  std::cerr << rank << report << "\n" << rank << "isphLandslide exiting\n" << std::flush;
+  if (run.nProcs > 1 && run.abort) run.abort(1);
+  return 1;
+}
+
 }  // namespace
 
 int runApplication(const ApplicationSpec& spec, int argc, const char* const* argv,
@@ -37,26 +49,21 @@ int runApplication(const ApplicationSpec& spec, int argc, const char* const* arg
   installOutOfMemoryHandler();
   try {
     const ArgList args(spec, argc, argv);
-    if (spec.banner) std::cout << banner(args) << '\n';
+    const bool banner = spec.banner && isMasterRank();  // a parallel run's log is rank 0's
+    if (banner) std::cout << isph::banner(args) << '\n';
     recoverCase(spec, args);
     body(args);
-    if (spec.banner) std::cout << "\nEnd\n" << std::flush;
+    if (banner) std::cout << "\nEnd\n" << std::flush;
     return 0;
   } catch (const HelpRequested& help) {
     std::cout << help.usage << std::flush;
     return 0;
   } catch (const FatalError& e) {
-    std::cout.flush();
-    std::cerr << e.report() << "\nisphLandslide exiting\n" << std::flush;
-    return 1;
+    return failed(e.report());
   } catch (const std::bad_alloc&) {
-    std::cout.flush();
-    std::cerr << "\n--> FATAL ERROR:\n" << outOfMemoryMessage() << "\n\nisphLandslide exiting\n" << std::flush;
-    return 1;
+    return failed(fmt::format("\n--> FATAL ERROR:\n{}\n", outOfMemoryMessage()));
   } catch (const std::exception& e) {
-    std::cout.flush();
-    std::cerr << "\n--> FATAL ERROR:\n" << e.what() << "\n\nisphLandslide exiting\n" << std::flush;
-    return 1;
+    return failed(fmt::format("\n--> FATAL ERROR:\n{}\n", e.what()));
   }
 }
 

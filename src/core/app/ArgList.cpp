@@ -22,6 +22,7 @@ std::vector<OptionSpec> allOptions(const ApplicationSpec& spec) {
     options.push_back({"latestTime", "", "process the latest time only"});
     options.push_back({"noZero", "", "exclude the 0 directory"});
   }
+  if (spec.parallel) options.push_back({"parallel", "", "run in parallel on the decomposed case (processor*/)"});
   options.insert(options.end(), spec.options.begin(), spec.options.end());
   return options;
 }

@@ -30,6 +30,9 @@ struct ApplicationSpec {
   std::vector<OptionSpec> options;            // in addition to the standard ones
   std::vector<std::string> arguments;         // positional arguments, by name (all required)
   bool timeOptions = false;                   // -time, -latestTime, -noZero
+  // -parallel: the decomposed case (processor<i>/), as OpenFOAM's; the solver then runs on the
+  // ranks of `mpirun -np N`, a post-processing utility reads the processor directories.
+  bool parallel = false;
   bool banner = true;                         // false for tools whose output is parsed
   CaseRecovery recovery = CaseRecovery::thisHost;
 };

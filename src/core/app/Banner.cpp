@@ -6,6 +6,7 @@
 
 #include <ctime>
 
+#include "core/ParallelRun.hpp"
 #include "core/Version.hpp"
 
 #ifdef _OPENMP
@@ -41,8 +42,9 @@ std::string banner(const ArgList& args) {
   out += fmt::format("Host     : {}\n", host);
   out += fmt::format("PID      : {}\n", ::getpid());
   out += fmt::format("Case     : {}\n", args.casePath().string());
-  out += fmt::format("nProcs   : 1\n");
-  out += fmt::format("nThreads : {}{}\n", threadCount(),
+  const int nProcs = parallelRun().nProcs;
+  out += fmt::format("nProcs   : {}{}\n", nProcs, nProcs > 1 ? " (MPI ranks)" : "");
+  out += fmt::format("nThreads : {}{}{}\n", threadCount(), nProcs > 1 ? " per rank" : "",
 #ifdef _OPENMP
                      " (OpenMP, from OMP_NUM_THREADS or the core count)"
 #else

@@ -15,11 +15,12 @@ TimeSelection timeSelection(const ArgList& args) {
 }
 
 std::vector<Instant> selectedTimes(const ArgList& args) {
-  const auto all = listTimes(args.casePath());
+  // -parallel: the times of the decomposed case (processor0's; parallel/DecomposedCase.hpp).
+  const auto dir = args.found("parallel") ? args.casePath() / "processor0" : args.casePath();
+  const auto all = listTimes(dir);
   auto times = selectTimes(all, timeSelection(args));
   if (times.empty()) {
-    warning(fmt::format("no time directory selected in {} ({} time directories found)", args.casePath().string(),
-                        all.size()));
+    warning(fmt::format("no time directory selected in {} ({} time directories found)", dir.string(), all.size()));
   }
   return times;
 }

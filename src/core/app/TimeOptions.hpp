@@ -1,6 +1,7 @@
 #pragma once
 // The times a post-processing utility works on, from -time RANGES, -latestTime and -noZero
-// (OpenFOAM's timeSelector). Warns when the selection is empty.
+// (OpenFOAM's timeSelector), of the case or, with -parallel, of its processor0 directory.
+// Warns when the selection is empty.
 #include <vector>
 
 #include "core/app/ArgList.hpp"

@@ -1,6 +1,8 @@
 // Progress of a run on a terminal or a pipe: rate-limited status lines, failure-proof writes.
 #include "core/time/ProgressReporter.hpp"
 
+#include "core/ParallelRun.hpp"
+
 #include <fcntl.h>
 #include <pthread.h>
 #include <unistd.h>
@@ -76,6 +78,7 @@ ProgressReporter::~ProgressReporter() {
 }
 
 int ProgressReporter::environmentFd() {
+  if (!isMasterRank()) return -1;  // a parallel run's progress is rank 0's
   const char* value = std::getenv("ISPH_PROGRESS_FD");
   if (!value || !*value) return -1;
   const std::string_view text(value);

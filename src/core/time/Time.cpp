@@ -13,6 +13,7 @@
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
+#include "core/ParallelRun.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "core/io/FoamFileHeader.hpp"
 #include "core/time/TimeName.hpp"
@@ -48,8 +49,12 @@ fs::file_time_type modificationTime(const fs::path& file) {
 
 }  // namespace
 
-Time::Time(const fs::path& caseDir)
+Time::Time(const fs::path& caseDir) : Time(caseDir, std::string()) {}
+
+Time::Time(const fs::path& caseDir, const std::string& processorDir)
     : caseDir_(caseDir),
+      processorDir_(processorDir),
+      timesDir_(processorDir.empty() ? caseDir : caseDir / processorDir),
       controlDictFile_(caseDir / "system" / "controlDict"),
       controlDictTime_(modificationTime(controlDictFile_)),
       controlDict_(Dictionary::readFile(controlDictFile_)),
@@ -61,7 +66,13 @@ Time::Time(const fs::path& caseDir)
   endTime_ = settings_.endTime;
   stopAt_ = settings_.stopAt;
 
-  const std::vector<Instant> times = listTimes(caseDir_);
+  // A processor folder without times: the undecomposed start of a parallel run.
+  std::vector<Instant> times = listTimes(timesDir_);
+  fs::path startRoot = timesDir_;
+  if (times.empty() && !processorDir_.empty()) {
+    times = listTimes(caseDir_);
+    startRoot = caseDir_;
+  }
   const Instant* start = nullptr;
   switch (settings_.startFrom) {
     case StartFrom::firstTime:
@@ -79,6 +90,7 @@ Time::Time(const fs::path& caseDir)
                  : (settings_.startFrom == StartFrom::startTime ? settings_.startTime : 0.0);
   name_ = start ? start->name : isph::timeName(value_, precision_);
   writeOrigin_ = value_;
+  startPath_ = startRoot / name_;
   restoreTimeState();
   startTime_ = value_;
   startName_ = name_;
@@ -86,7 +98,7 @@ Time::Time(const fs::path& caseDir)
 
 // Restart contract: <start>/uniform/time holds the exact value, the index and the steps.
 void Time::restoreTimeState() {
-  const fs::path file = caseDir_ / name_ / "uniform" / "time";
+  const fs::path file = startPath_ / "uniform" / "time";
   std::optional<double> stored;
   if (fs::exists(file)) {
     const Dictionary dict = Dictionary::readFile(file);
@@ -158,6 +170,9 @@ void Time::adjustDeltaT(double dtWanted) {
 
 Time& Time::operator++() {
   readModifiedControlDict();
+  // A parallel run's ranks stop at the same step: a signal that one rank caught (mpirun passes
+  // it on to each at its own moment) stops them all.
+  if (const int sig = agreeOverRanks(signalCaught); sig && !signalCaught) signalCaught = sig;
   if (signalCaught && !signalHandled_) {
     signalHandled_ = true;
     stopAt_ = StopAt::writeNow;
@@ -254,8 +269,9 @@ void Time::purgeOldWrites() {
   if (writtenTimes_.empty() || writtenTimes_.back() != name_) writtenTimes_.push_back(name_);
   while (writtenTimes_.size() > static_cast<std::size_t>(settings_.purgeWrite)) {
     // Out of view first (a hidden name), then deleted: a kill meanwhile leaves no half time.
+    // (A parallel run's rank purges its own processor<rank>/<time>.)
     try {
-      removeDirectoryAtomically(caseDir_ / writtenTimes_.front());
+      removeDirectoryAtomically(timesDir_ / writtenTimes_.front());
     } catch (const FatalError& e) {
       warning(fmt::format("purgeWrite: {}", e.what()));
     }
@@ -266,7 +282,8 @@ void Time::purgeOldWrites() {
 bool Time::readModifiedControlDict() {
   if (!settings_.runTimeModifiable) return false;
   const auto mtime = modificationTime(controlDictFile_);
-  if (mtime == controlDictTime_) return false;
+  // (every rank of a parallel run re-reads it at the same step, when any of them sees it changed)
+  if (!agreeOverRanks(mtime != controlDictTime_)) return false;
   controlDictTime_ = mtime;
   info("Re-reading system/controlDict");
   try {

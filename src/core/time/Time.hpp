@@ -26,6 +26,12 @@ namespace isph {
 class Time {
  public:
   explicit Time(const std::filesystem::path& caseDir);
+  // The time of one rank of a parallel run (the solver with -parallel, doc/parallel.md): the
+  // case's own system/controlDict, and the times of <case>/<processorDir> (processor<rank>):
+  // the start time is chosen among them if that folder holds any (a decomposed case), else
+  // among the case's own (an undecomposed start, which the solver decomposes in memory).
+  // Time directories are written to, and purged from, <case>/<processorDir>.
+  Time(const std::filesystem::path& caseDir, const std::string& processorDir);
 
   double value() const { return value_; }
   const std::string& timeName() const { return name_; }
@@ -36,7 +42,12 @@ class Time {
   double endTime() const { return endTime_; }
   int timePrecision() const { return precision_; }  // grows when names would collide
   const std::filesystem::path& path() const { return caseDir_; }
-  std::filesystem::path timePath() const { return caseDir_ / name_; }
+  std::filesystem::path timePath() const { return timesDir_ / name_; }
+  // Where the start time was read from: timePath() at the start, but for the undecomposed
+  // start of a parallel run the case's own <start> (rank 0 reads it, the others nothing).
+  const std::filesystem::path& startPath() const { return startPath_; }
+  // A parallel run that starts from a decomposed case (processor<rank>/<start>).
+  bool decomposedStart() const { return !processorDir_.empty() && startPath_.parent_path() == timesDir_; }
   const ControlSettings& settings() const { return settings_; }
   const Dictionary& controlDict() const { return controlDict_; }  // for `functions` etc.
 
@@ -95,6 +106,9 @@ class Time {
   std::optional<StepStart> stepStart_;
 
   std::filesystem::path caseDir_;
+  std::string processorDir_;      // "processor<rank>" in a parallel run, else empty
+  std::filesystem::path timesDir_;   // where time directories are written: the case or its processor folder
+  std::filesystem::path startPath_;  // the start time's folder
   std::filesystem::path controlDictFile_;
   std::filesystem::file_time_type controlDictTime_{};
   Dictionary controlDict_;

@@ -9,6 +9,7 @@
 #include "core/Error.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "linearSolvers/hypre/HypreError.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -95,7 +96,8 @@ void BoomerAMG::destroy() {
 }
 
 HYPRE_PtrToParSolverFcn BoomerAMG::prepare(long firstRow, long nRows) {
-  const bool sameMatrixShape = amg_ && firstRow == firstRow_ && nRows == nRows_;
+  // (The same decision on every rank of a parallel run: the set-up is collective.)
+  const bool sameMatrixShape = allRanks(amg_ && firstRow == firstRow_ && nRows == nRows_);
   const bool keep = std::exchange(keepNext_, false);
   const bool renumbered = std::exchange(rebuildNext_, false);
   const bool degraded = std::exchange(degraded_, false);

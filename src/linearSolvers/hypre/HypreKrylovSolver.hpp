@@ -2,12 +2,15 @@
 // hypre's Krylov solvers on ParCSR matrices, registered as `PCG` (symmetric systems; two-norm
 // criterion ||r|| / ||b||, residual recomputed at the end), `GMRES` (kDim 30) and `BiCGSTAB`,
 // each with `preconditioner BoomerAMG` (default, see BoomerAMG.hpp), `diagonal` (Jacobi)
-// or `none`. The system goes through the IJ interface on every solve (HypreSystem.hpp).
+// or `none`. The system goes through the IJ interface once per solve (HypreSystem.hpp), and
+// serves every pass of it. In a parallel run each rank hands hypre its own rows (a ParCSR
+// matrix over all ranks), and the residuals are hypre's distributed products.
 #include <memory>
 #include <string>
 
 #include "linearSolvers/ControlledLinearSolver.hpp"
 #include "linearSolvers/hypre/BoomerAMG.hpp"
+#include "linearSolvers/hypre/HypreSystem.hpp"
 
 namespace isph {
 
@@ -29,12 +32,21 @@ class HypreKrylovSolver : public ControlledLinearSolver {
   int preconditionersBuilt() const override { return amg_ ? amg_->hierarchiesBuilt() : 0; }
   // The BoomerAMG preconditioner (nullptr unless chosen): hierarchies built, reuse.
   const BoomerAMG* amg() const { return amg_.get(); }
+  bool distributed() const override { return true; }
 
  protected:
   int iterate(const SparseSystem& A, std::vector<double>& x, double target, int maxIter,
               SolverPerformance& performance) override;
+  double residual(const SparseSystem& A, const std::vector<double>& x, double bNorm,
+                  SolverPerformance& performance) override;
+  void release() override;
 
  private:
+  // The matrix and right-hand side of the solve under way, handed to hypre once for all passes.
+  void handOver(const SparseSystem& A, SolverPerformance& performance);
+  std::unique_ptr<HypreMatrix> matrix_;
+  std::unique_ptr<HypreVector> rhs_;
+
   Method method_;
   Preconditioner preconditioner_;
   int kDim_ = 30;  // GMRES restart

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -34,8 +35,14 @@ HypreMatrix::HypreMatrix(const SparseSystem& A) {
   const auto first = static_cast<HYPRE_BigInt>(A.firstRow);
   const HYPRE_BigInt last = first + n - 1;
 
-  std::vector<HYPRE_Int> rowSizes(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) rowSizes[i] = A.rowStart[i + 1] - A.rowStart[i];
+  std::vector<HYPRE_Int> rowSizes(static_cast<std::size_t>(n)), diagSizes(rowSizes), offdSizes(rowSizes);
+  for (int i = 0; i < n; ++i) {
+    rowSizes[i] = A.rowStart[i + 1] - A.rowStart[i];
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      const bool own = A.columns[k] >= A.firstRow && A.columns[k] < A.firstRow + n;
+      ++(own ? diagSizes : offdSizes)[static_cast<std::size_t>(i)];
+    }
+  }
   const std::vector<HYPRE_BigInt> rows = rowNumbers(A.firstRow, rowSizes.size());
   const std::vector<HYPRE_BigInt> cols(A.columns.begin(), A.columns.end());
 
@@ -44,7 +51,8 @@ HypreMatrix::HypreMatrix(const SparseSystem& A) {
              "HYPRE_IJMatrixCreate");
   ij_.reset(ij);
   hypreCheck(HYPRE_IJMatrixSetObjectType(ij, HYPRE_PARCSR), "HYPRE_IJMatrixSetObjectType");
-  hypreCheck(HYPRE_IJMatrixSetRowSizes(ij, rowSizes.data()), "HYPRE_IJMatrixSetRowSizes");
+  hypreCheck(HYPRE_IJMatrixSetDiagOffdSizes(ij, diagSizes.data(), offdSizes.data()),
+             "HYPRE_IJMatrixSetDiagOffdSizes");
   hypreCheck(HYPRE_IJMatrixInitialize(ij), "HYPRE_IJMatrixInitialize");
   // All rows in one call, straight from the CSR arrays (ncols is not const in hypre's API).
   hypreCheck(
@@ -74,6 +82,16 @@ HypreVector::HypreVector(long firstRow, const std::vector<double>& values)
   void* object = nullptr;
   hypreCheck(HYPRE_IJVectorGetObject(ij, &object), "HYPRE_IJVectorGetObject");
   par_ = static_cast<HYPRE_ParVector>(object);
+}
+
+double HypreMatrix::residualNorm(const HypreVector& b, long firstRow, const std::vector<double>& x) const {
+  const HypreVector xh(firstRow, x);
+  HypreVector r(firstRow, std::vector<double>(x.size()));
+  hypreCheck(HYPRE_ParVectorCopy(b.par(), r.par()), "HYPRE_ParVectorCopy");
+  hypreCheck(HYPRE_ParCSRMatrixMatvec(-1.0, parcsr_, xh.par(), 1.0, r.par()), "HYPRE_ParCSRMatrixMatvec");
+  double rr = 0;
+  hypreCheck(HYPRE_ParVectorInnerProd(r.par(), r.par(), &rr), "HYPRE_ParVectorInnerProd");
+  return std::sqrt(rr);
 }
 
 void HypreVector::copyTo(std::vector<double>& values) const {

@@ -1,7 +1,10 @@
 #pragma once
-// A SparseSystem handed to hypre through its IJ interface (global row numbers, so that an
-// MPI decomposition can come later): the matrix in ONE HYPRE_IJMatrixSetValues call with the
-// CSR arrays (row-by-row calls cost as much as the solve), and the vectors b and x.
+// A SparseSystem handed to hypre through its IJ interface, by global row numbers: the matrix in
+// ONE HYPRE_IJMatrixSetValues call with the CSR arrays (row-by-row calls cost as much as the
+// solve), and the vectors b and x. In a parallel run each rank sets its own block of rows
+// (never another rank's: off-rank values go through hypre's slow stash, hypre issue 226), and
+// together they make one ParCSR matrix, each row's columns split into those of the rank's
+// block (the diagonal part) and the others (off-diagonal), as hypre wants them preallocated.
 // Everything is freed by the destructors.
 #include <HYPRE.h>
 #include <HYPRE_IJ_mv.h>
@@ -15,6 +18,8 @@
 
 namespace isph {
 
+class HypreVector;
+
 class HypreMatrix {
  public:
   explicit HypreMatrix(const SparseSystem& A);
@@ -22,6 +27,8 @@ class HypreMatrix {
   HypreMatrix& operator=(const HypreMatrix&) = delete;
 
   HYPRE_ParCSRMatrix parcsr() const { return parcsr_; }
+  // ||b - A x||_2 over all ranks, x given as this rank's block (rows from firstRow); collective.
+  double residualNorm(const HypreVector& b, long firstRow, const std::vector<double>& x) const;
 
  private:
   std::unique_ptr<std::remove_pointer_t<HYPRE_IJMatrix>, HYPRE_Int (*)(HYPRE_IJMatrix)> ij_{

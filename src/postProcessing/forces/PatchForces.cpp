@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "core/Error.hpp"
+#include "parallel/Reduce.hpp"
 #include "postProcessing/forces/WallStress.hpp"
 
 namespace isph {
@@ -56,6 +57,7 @@ PatchForces patchForces(const PatchForceInput& in) {
   Vec3 normalSum = Vec3::Zero();
   for (std::size_t w = 0; w < cloud.size(); ++w) {
     if (cloud.kind[w] != wall || cloud.patch[w] < 0 || !inSet[static_cast<std::size_t>(cloud.patch[w])]) continue;
+    if (in.owned && !(*in.owned)[w]) continue;  // a ghost: its owner counts it
     const Vec3& n = cloud.normal[w];
     if (facingNorm > 0 && !(n.dot(facing) > 0.5)) continue;
     const Vec3 arm = cloud.positions[w] - in.CofR;
@@ -71,6 +73,20 @@ PatchForces patchForces(const PatchForceInput& in) {
     out.momentFriction += arm.cross(ff);
     normalSum += n;
     ++out.nWall;
+  }
+  if (in.owned) {  // the sums over all ranks
+    double sums[22];
+    Vec3* parts[] = {&out.pressure, &out.deviatoric, &out.friction, &out.momentPressure,
+                     &out.momentDeviatoric, &out.momentFriction, &normalSum};
+    for (int i = 0; i < 7; ++i) {
+      for (int d = 0; d < 3; ++d) sums[3 * i + d] = (*parts[i])[d];
+    }
+    sums[21] = static_cast<double>(out.nWall);
+    sumOverRanks(std::span<double>(sums));
+    for (int i = 0; i < 7; ++i) {
+      for (int d = 0; d < 3; ++d) (*parts[i])[d] = sums[3 * i + d];
+    }
+    out.nWall = static_cast<long>(sums[21]);
   }
   out.total = out.pressure + out.deviatoric + out.friction;
   out.momentTotal = out.momentPressure + out.momentDeviatoric + out.momentFriction;

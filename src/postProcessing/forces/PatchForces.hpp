@@ -80,6 +80,9 @@ struct PatchForceInput {
   // Only the wall particles whose normal n_w lies within 60° of this direction (n_w·f̂ > ½):
   // one face of a structure, e.g. a barrier's upstream face (ForceSet `facing`); zero: all.
   Vec3 facing = Vec3::Zero();
+  // A parallel run: this rank's own particles (1) among the cloud's ghosts (0); the sums run
+  // over the own wall particles and then over all ranks (a collective call). Null: serial.
+  const std::vector<char>* owned = nullptr;
 };
 
 // Sums over the wall particles of `in.patches` (those facing `in.facing`, if given).

@@ -33,7 +33,8 @@ std::vector<PatchForces> setForces(const SetForcesInput& in) {
                                .wallFriction = in.wallFriction,
                                .CofR = in.sets[s].CofR,
                                .width = cloud.properties.dimension == 2 ? in.sets[s].widthOrUnit() : 1.0,
-                               .facing = in.sets[s].facing.value_or(Vec3::Zero())}));
+                               .facing = in.sets[s].facing.value_or(Vec3::Zero()),
+                               .owned = in.owned}));
   }
   return out;
 }

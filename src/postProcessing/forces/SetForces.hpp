@@ -22,6 +22,8 @@ struct SetForcesInput {
   const NeighbourList* neighbours = nullptr;
   // The solver's Coulomb friction traction on the wall particles (field wallFriction), or null.
   const std::vector<Vec3>* wallFriction = nullptr;
+  // A parallel run: this rank's own particles (PatchForces.hpp); null: serial.
+  const std::vector<char>* owned = nullptr;
 };
 
 std::vector<PatchForces> setForces(const SetForcesInput& in);

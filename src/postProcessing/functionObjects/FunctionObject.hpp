@@ -37,6 +37,10 @@ struct SolverState {
   const NeighbourList* neighbours = nullptr;     // over cloud.positions, if the solver has one
   const std::vector<Vec3>* wallFriction = nullptr;  // the Coulomb friction traction on the walls; null: none
   const Vec3* gravity = nullptr;                    // the solver's g [m/s²] (momentumBalance); null: none
+  // A parallel run: which particles of `cloud` are this rank's own (1) rather than ghosts (0);
+  // a function object sums over the own ones, reduces over the ranks and writes on rank 0.
+  // Null: a serial run.
+  const std::vector<char>* owned = nullptr;
 };
 
 class FunctionObject {

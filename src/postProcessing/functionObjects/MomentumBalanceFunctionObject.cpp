@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "core/Error.hpp"
+#include "core/ParallelRun.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -32,9 +34,11 @@ void MomentumBalanceFunctionObject::execute(const Time& time, const SolverState&
   Vec3 P = Vec3::Zero();
   for (std::size_t i = 0; i < c.size(); ++i) {
     if (c.kind[i] != static_cast<label>(ParticleKind::material)) continue;
+    if (state.owned && !(*state.owned)[i]) continue;  // a ghost: its owner counts it
     M += c.mass[i];
     P += c.mass[i] * c.U[i];
   }
+  if (state.owned) M = sumOverRanks(M), P = sumOverRanks(P);  // a parallel run: all ranks
   M *= scale;
   P *= scale;
   const double t = time.value();
@@ -50,6 +54,7 @@ void MomentumBalanceFunctionObject::execute(const Time& time, const SolverState&
   previousTime_ = t;
   previousMomentum_ = P;
 
+  if (!isMasterRank()) return;  // a parallel run's file is rank 0's
   const char* axes[] = {"x", "y", "z"};
   std::string text;
   if (!out_.is_open()) {

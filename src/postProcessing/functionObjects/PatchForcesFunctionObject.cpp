@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "core/Log.hpp"
+#include "core/ParallelRun.hpp"
 #include "postProcessing/forces/SetForces.hpp"
 
 namespace isph {
@@ -20,7 +21,9 @@ void PatchForcesFunctionObject::execute(const Time& time, const SolverState& sta
                                  .tau = state.tau,
                                  .kernel = state.kernel,
                                  .neighbours = state.neighbours,
-                                 .wallFriction = state.wallFriction});
+                                 .wallFriction = state.wallFriction,
+                                 .owned = state.owned});
+  if (!isMasterRank()) return;  // a parallel run's file is rank 0's
   std::string text;
   if (!table_) {
     table_.emplace(set_[0], state.cloud.properties.dimension);

@@ -178,6 +178,40 @@ TEST(Time, PurgeWriteKeepsTheNewest) {
   EXPECT_EQ(timeNames(c.path()), "0 0.4 0.5");
 }
 
+// A rank of a parallel run: the case's controlDict, its processor folder's times (a
+// decomposed case), or the case's own when that folder has none (an undecomposed start);
+// writes and purges in the processor folder.
+TEST(Time, ParallelRunStartsFromItsProcessorFolderOrTheUndecomposedCase) {
+  test::TempCase c;
+  for (const char* d : {"0", "0.5"}) c.mkdir(d);
+  writeControlDict(c,
+                   "startFrom latestTime; endTime 0.8; deltaT 0.1;\n"
+                   "writeControl timeStep; writeInterval 1; purgeWrite 1;\n");
+  {
+    Time undecomposed(c.path(), "processor1");
+    EXPECT_EQ(undecomposed.timeName(), "0.5");
+    EXPECT_FALSE(undecomposed.decomposedStart());
+    EXPECT_EQ(undecomposed.startPath(), c.path() / "0.5");
+    EXPECT_EQ(undecomposed.timePath(), c.path() / "processor1" / "0.5");
+    while (undecomposed.run()) {
+      ++undecomposed;
+      fs::create_directories(undecomposed.timePath());
+      undecomposed.writeTimeState(undecomposed.timePath());
+      undecomposed.purgeOldWrites();
+    }
+  }
+  EXPECT_EQ(timeNames(c.path() / "processor1"), "0.8");  // purgeWrite 1, in the processor folder
+  EXPECT_EQ(timeNames(c.path()), "0 0.5");
+  Time decomposed(c.path(), "processor1");
+  EXPECT_EQ(decomposed.timeName(), "0.8");
+  EXPECT_TRUE(decomposed.decomposedStart());
+  EXPECT_EQ(decomposed.startPath(), c.path() / "processor1" / "0.8");
+  EXPECT_EQ(decomposed.timeIndex(), 3);  // from processor1/0.8/uniform/time
+  EXPECT_FALSE(decomposed.run());
+  EXPECT_EQ(Time(c.path()).startPath(), c.path() / "0.5");
+  EXPECT_FALSE(Time(c.path()).decomposedStart());
+}
+
 TEST(Time, StopAtWriteNowAtRunTime) {
   test::TempCase c;
   const std::string controls =

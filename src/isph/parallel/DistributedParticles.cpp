@@ -1,0 +1,342 @@
+#include "isph/parallel/DistributedParticles.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include "core/Error.hpp"
+#include "core/Log.hpp"
+#include "parallel/DecomposedCase.hpp"
+#include "parallel/GlobalNumbering.hpp"
+#include "parallel/Migration.hpp"
+#include "parallel/ParticleFields.hpp"
+#include "parallel/ParticlePartition.hpp"
+#include "parallel/Reduce.hpp"
+#include "particles/CloudIO.hpp"
+#include "sph/neighbours/NearestPoints.hpp"
+#include "sph/neighbours/NeighbourList.hpp"
+
+namespace isph {
+
+namespace {
+
+constexpr auto materialKind = static_cast<label>(ParticleKind::material);
+constexpr auto wallKind = static_cast<label>(ParticleKind::wall);
+constexpr auto dummyKind = static_cast<label>(ParticleKind::dummy);
+
+// The index of each dummy particle's wall particle in `cloud` (the nearest within `radius`,
+// ties by origId, as initialiseParticleSystem finds it), -1 for the others and for a dummy
+// without one (initialiseParticleSystem then stops with the message the serial run gives).
+std::vector<int> wallOfDummies(const ParticleCloud& cloud, double radius) {
+  std::vector<std::size_t> walls, dummies;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.kind[i] == wallKind) walls.push_back(i);
+    if (cloud.kind[i] == dummyKind) dummies.push_back(i);
+  }
+  std::vector<Vec3> wallX, dummyX;
+  std::vector<label> wallIds;
+  for (const std::size_t w : walls) {
+    wallX.push_back(cloud.positions[w]);
+    wallIds.push_back(cloud.origId[w]);
+  }
+  for (const std::size_t d : dummies) dummyX.push_back(cloud.positions[d]);
+  const std::vector<int> nearest = nearestPoints(wallX, wallIds, dummyX, radius, cloud.properties.dimension);
+  std::vector<int> parent(cloud.size(), -1);
+  for (std::size_t k = 0; k < dummies.size(); ++k) {
+    parent[dummies[k]] = nearest[k] < 0 ? -1 : static_cast<int>(walls[static_cast<std::size_t>(nearest[k])]);
+  }
+  return parent;
+}
+
+// The order material, wall, dummy (each in its current order), and the material by cell.
+std::vector<std::size_t> kindAndCellOrder(const ParticleCloud& cloud, double cellSize) {
+  std::vector<std::size_t> order;
+  std::vector<Vec3> material;
+  std::vector<std::size_t> materialIndex;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.kind[i] == materialKind) {
+      material.push_back(cloud.positions[i]);
+      materialIndex.push_back(i);
+    }
+  }
+  for (const int m : cellOrder(material, cellSize, cloud.properties.dimension)) {
+    order.push_back(materialIndex[static_cast<std::size_t>(m)]);
+  }
+  for (const label kind : {wallKind, dummyKind}) {
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (cloud.kind[i] == kind) order.push_back(i);
+    }
+  }
+  return order;
+}
+
+}  // namespace
+
+DistributedParticles::DistributedParticles(const Time& time) : settings_(DecompositionSettings::read(time.path())) {
+  if (settings_.numberOfSubdomains != nRanks()) {
+    fatalError(fmt::format("system/decomposeParDict has numberOfSubdomains {}, but the run has {} MPI ranks: run "
+                           "mpirun -np {} (or change numberOfSubdomains, and run decomposePar -force)",
+                           settings_.numberOfSubdomains, nRanks(), settings_.numberOfSubdomains));
+  }
+  const int processors = nProcessorDirectories(time.path());
+  if (!allRanks(time.decomposedStart() == (processors > 0))) {
+    fatalError(fmt::format("{} holds {} processor directories, not all with the start time {}: run decomposePar "
+                           "-force, or remove processor* to start from the undecomposed {}",
+                           time.path().string(), processors, time.timeName(), time.timeName()));
+  }
+  if (processors > 0 && processors != nRanks()) {
+    fatalError(fmt::format("{} is decomposed into {} processor directories, but the run has {} MPI ranks",
+                           time.path().string(), processors, nRanks()));
+  }
+  if (!allRanks(minOverRanks(time.value()) == maxOverRanks(time.value()))) {
+    fatalError("the processor directories start at different times: their latest times differ");
+  }
+  std::filesystem::create_directories(time.timePath().parent_path());  // processor<rank>, for the writes
+}
+
+DistributedParticles::~DistributedParticles() = default;
+
+ParticleCloud DistributedParticles::read(const Time& time, const std::string& name) const {
+  if (time.decomposedStart() || thisRank() == 0) return readCloud(time.startPath(), name);
+  ParticleCloud cloud;  // an undecomposed start: rank 0 reads, the others start empty
+  cloud.name = name;
+  cloud.properties = readCloudProperties(time.startPath(), name);
+  return cloud;
+}
+
+void DistributedParticles::distribute(ParticleCloud& cloud, double wallRadius) {
+  const int dimension = cloud.properties.dimension;
+  zoltan_ = std::make_unique<ZoltanPartitioner>(settings_.algorithm, dimension, nRanks());
+  const PartitionInput in = partitionInput(cloud, wallOfDummies(cloud, wallRadius));
+  const std::vector<int> part = zoltan_->partition(in.points, in.weights, cloud.origId);
+  ParticleFields fields(cloud);
+  migrateParticles(fields, part);
+
+  std::vector<double> loads;
+  lastImbalance_ = worstImbalance_ = imbalanceOf(partitionLoad(cloud), &loads);
+  long material = 0;
+  for (const label k : cloud.kind) material += k == materialKind;
+  const std::vector<long> all = gatherOverRanks(static_cast<long>(cloud.size()));
+  const std::vector<long> materials = gatherOverRanks(material);
+  info("\nDecomposition: {} MPI ranks, zoltan {} (system/decomposeParDict); repartition above {} x the mean load",
+       nRanks(), settings_.algorithm, settings_.repartitionFactor);
+  info("    particles per rank:          {}", fmt::join(all, " "));
+  info("    material particles per rank: {}", fmt::join(materials, " "));
+  info("    balance: largest load / mean load = {:.3f} (material 1, wall {}, dummy {})", lastImbalance_,
+       wallWeight, dummyWeight);
+}
+
+double DistributedParticles::imbalanceOf(double load, std::vector<double>* loads) const {
+  const std::vector<double> all = gatherOverRanks(load);
+  if (loads) *loads = all;
+  return imbalance(all);
+}
+
+void DistributedParticles::beginStep(ParticleSystem& ps, const MaterialTable& materials, double supportRadius,
+                                     bool redistribute, const Time& time) {
+  if (!adopted_) {  // the particles as initialiseParticleSystem left them: own, each dummy's wall found
+    parentId_.assign(ps.size(), -1);
+    for (std::size_t d = ps.dummyBegin(); d < ps.size(); ++d) {
+      parentId_[d] = ps.cloud.origId[static_cast<std::size_t>(ps.parentWall[d])];
+    }
+    firstRow_ = GlobalNumbering::of(static_cast<long>(ps.nMaterial)).first;
+    adopted_ = true;
+  } else {
+    dropGhosts(ps);
+    if (redistribute) this->redistribute(ps, supportRadius, time);
+  }
+  buildGhosts(ps, materials, supportRadius);
+}
+
+void DistributedParticles::dropGhosts(ParticleSystem& ps) {
+  std::vector<std::size_t> keep;
+  for (std::size_t a = 0; a < ps.size(); ++a) {
+    if (ps.isOwned(a)) keep.push_back(a);
+  }
+  ParticleFields fields(ps.cloud);
+  fields.add(parentId_);  // (as the cloud: one per particle, own and ghost)
+  fields.keep(keep);
+  ps.nMaterial = ps.nOwnedMaterial;
+  ps.nWall = ps.nOwnedWall;
+  ps.nDummy = ps.nOwnedDummy;
+  ps.halo = nullptr;
+  halo_.reset();
+  ps.ghostRow.clear();
+}
+
+void DistributedParticles::redistribute(ParticleSystem& ps, double supportRadius, const Time& time) {
+  ParticleCloud& cloud = ps.cloud;
+  std::unordered_map<label, std::size_t> wallIndex;
+  for (std::size_t w = ps.wallBegin(); w < ps.dummyBegin(); ++w) wallIndex[cloud.origId[w]] = w;
+  std::vector<int> parent(cloud.size(), -1);
+  for (std::size_t d = ps.dummyBegin(); d < cloud.size(); ++d) parent[d] = static_cast<int>(wallIndex.at(parentId_[d]));
+  const PartitionInput in = partitionInput(cloud, parent);
+
+  // Where each particle belongs by the kept cuts; the loads that gives.
+  std::vector<int> destination(cloud.size());
+  std::vector<double> loads(static_cast<std::size_t>(nRanks()), 0.0);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    destination[i] = zoltan_->partOf(in.points[i]);
+    loads[static_cast<std::size_t>(destination[i])] += in.weights[i];
+  }
+  sumOverRanks(std::span<double>(loads));
+  double balance = imbalance(loads);
+  if (balance > settings_.repartitionFactor) {
+    destination = zoltan_->partition(in.points, in.weights, cloud.origId);
+    std::fill(loads.begin(), loads.end(), 0.0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) loads[static_cast<std::size_t>(destination[i])] += in.weights[i];
+    sumOverRanks(std::span<double>(loads));
+    info("    Repartitioned at time {}: largest load / mean load {:.3f} > {} -> {:.3f}", time.timeName(), balance,
+         settings_.repartitionFactor, imbalance(loads));
+    balance = imbalance(loads);
+    ++repartitions_;
+  }
+  ParticleFields fields(cloud);
+  fields.add(parentId_);
+  migrateParticles(fields, destination);
+
+  // Material (by cell), wall, dummy; and the rows of the own material, numbered anew.
+  const std::vector<std::size_t> order = kindAndCellOrder(cloud, supportRadius);
+  fields.keep(order);
+  ps.nOwnedMaterial = ps.nMaterial = static_cast<std::size_t>(std::count(cloud.kind.begin(), cloud.kind.end(), materialKind));
+  ps.nOwnedWall = ps.nWall = static_cast<std::size_t>(std::count(cloud.kind.begin(), cloud.kind.end(), wallKind));
+  ps.nOwnedDummy = ps.nDummy = cloud.size() - ps.nMaterial - ps.nWall;
+  firstRow_ = GlobalNumbering::of(static_cast<long>(ps.nMaterial)).first;
+  ++checks_;
+  lastImbalance_ = balance;
+  worstImbalance_ = std::max(worstImbalance_, balance);
+  imbalanceSum_ += balance;
+}
+
+void DistributedParticles::buildGhosts(ParticleSystem& ps, const MaterialTable& materials, double supportRadius) {
+  ParticleCloud& cloud = ps.cloud;
+  const std::size_t nOwned = cloud.size();
+  // Own particles: material [0, nM), walls [nM, nM + nW), dummies after (ps as dropGhosts left it).
+  const std::size_t nM = ps.nMaterial, nW = ps.nWall;
+  std::unordered_map<label, std::size_t> ownWall;
+  for (std::size_t w = nM; w < nM + nW; ++w) ownWall[cloud.origId[w]] = w;
+  std::vector<int> companion(nOwned, -1);
+  std::vector<long> row(nOwned, -1);
+  for (std::size_t i = 0; i < nOwned; ++i) {
+    if (i < nM) row[i] = firstRow_ + static_cast<long>(i);
+    if (cloud.kind[i] == dummyKind) companion[i] = static_cast<int>(ownWall.at(parentId_[i]));
+  }
+  halo_ = std::make_unique<Halo>(cloud.positions, supportRadius, cloud.properties.dimension, companion);
+
+  // The ghosts' fields appended to the own particles', then the layout of ParticleSystem.hpp.
+  std::vector<label> parent = parentId_;
+  ParticleFields fields(cloud);
+  fields.add(parent);
+  fields.add(row);
+  {
+    ParticleCloud ghosts;
+    std::vector<label> ghostParent;
+    std::vector<long> ghostRow;
+    ParticleFields ghostFields(ghosts);
+    ghostFields.add(ghostParent);
+    ghostFields.add(ghostRow);
+    halo_->sendParticles(fields, ghostFields);
+    const std::vector<std::byte> packed = ghostFields.pack([&] {
+      std::vector<std::size_t> all(ghosts.size());
+      std::iota(all.begin(), all.end(), 0);
+      return all;
+    }());
+    fields.append(packed.data(), ghosts.size());
+  }
+  const std::size_t nLocal = cloud.size();
+  std::vector<std::size_t> order;
+  std::vector<std::size_t> counts;  // own and ghost, per kind
+  for (const label kind : {materialKind, wallKind, dummyKind}) {
+    for (const bool own : {true, false}) {
+      const std::size_t before = order.size();
+      for (std::size_t i = own ? 0 : nOwned; i < (own ? nOwned : nLocal); ++i) {
+        if (cloud.kind[i] == kind) order.push_back(i);
+      }
+      counts.push_back(order.size() - before);
+    }
+  }
+  fields.keep(order);
+  std::vector<std::size_t> placeOf(nLocal);
+  for (std::size_t k = 0; k < nLocal; ++k) placeOf[order[k]] = k;
+  std::vector<std::size_t> sendLocal, ghostLocal;
+  for (const std::size_t i : halo_->sent()) sendLocal.push_back(placeOf[i]);
+  for (std::size_t g = nOwned; g < nLocal; ++g) ghostLocal.push_back(placeOf[g]);
+
+  ps.nOwnedMaterial = counts[0];
+  ps.nMaterial = counts[0] + counts[1];
+  ps.nOwnedWall = counts[2];
+  ps.nWall = counts[2] + counts[3];
+  ps.nOwnedDummy = counts[4];
+  ps.nDummy = counts[4] + counts[5];
+  halo_->setLayout(std::move(sendLocal), std::move(ghostLocal), nLocal, ps.nMaterial);
+  ps.halo = halo_.get();
+  ps.firstRow = firstRow_;
+  ps.ghostRow.assign(row.begin() + static_cast<long>(ps.nOwnedMaterial), row.begin() + static_cast<long>(ps.nMaterial));
+  parentId_ = std::move(parent);
+
+  // What initialiseParticleSystem set for every particle: density, volume, dummy-to-wall.
+  const double wallArea = ps.dimension == 3 ? ps.dx * ps.dx * ps.dx : ps.dx * ps.dx;
+  ps.rho.assign(nLocal, ps.wallRho);
+  ps.volume.assign(nLocal, wallArea);
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    ps.rho[a] = materials[static_cast<std::size_t>(cloud.material[a])].rho();
+    ps.volume[a] = cloud.mass[a] / ps.rho[a];
+  }
+  std::unordered_map<label, std::size_t> wallAt;
+  for (std::size_t w = ps.wallBegin(); w < ps.dummyBegin(); ++w) wallAt[cloud.origId[w]] = w;
+  ps.parentWall.assign(nLocal, -1);
+  for (std::size_t d = ps.dummyBegin(); d < nLocal; ++d) {
+    const auto it = wallAt.find(parentId_[d]);
+    if (it == wallAt.end()) {
+      fatalError(fmt::format("rank {}: dummy particle {} arrived without its wall particle {}", thisRank(),
+                             cloud.origId[d], parentId_[d]));
+    }
+    ps.parentWall[d] = static_cast<int>(it->second);
+  }
+  markFrictionWalls(ps);
+  ghostSum_ += static_cast<long>(halo_->nGhosts());
+  ++steps_;
+}
+
+std::string DistributedParticles::balanceSummary() const {
+  const long ghosts = sumOverRanks(ghostSum_);
+  return fmt::format(
+      "Partition balance (largest load / mean load): {:.3f} now, {:.3f} at worst, {:.3f} on average over {} checks; "
+      "{} repartition(s); {:.0f} ghost particles per step over all ranks",
+      lastImbalance_, worstImbalance_, checks_ > 0 ? imbalanceSum_ / checks_ : lastImbalance_, checks_, repartitions_,
+      steps_ > 0 ? static_cast<double>(ghosts) / static_cast<double>(steps_) : 0.0);
+}
+
+double meanNeighbours(const ParticleSystem& ps) {
+  long pairs = 0, particles = 0;
+  const auto& nl = ps.neighbours;
+  for (std::size_t a = 0; a < nl.nParticles(); ++a) {
+    if (!ps.isOwned(a)) continue;
+    pairs += nl.start[a + 1] - nl.start[a];
+    ++particles;
+  }
+  particles = sumOverRanks(particles);
+  return particles > 0 ? static_cast<double>(sumOverRanks(pairs)) / static_cast<double>(particles) : 0.0;
+}
+
+std::vector<char> ownedMask(const ParticleSystem& ps) {
+  std::vector<char> mask(ps.size());
+  for (std::size_t a = 0; a < ps.size(); ++a) mask[a] = ps.isOwned(a);
+  return mask;
+}
+
+ParticleCloud ownedCloud(const ParticleSystem& ps) {
+  ParticleCloud cloud = ps.cloud;
+  if (!ps.halo) return cloud;
+  std::vector<std::size_t> keep;
+  for (std::size_t a = 0; a < ps.size(); ++a) {
+    if (ps.isOwned(a)) keep.push_back(a);
+  }
+  ParticleFields(cloud).keep(keep);
+  return cloud;
+}
+
+}  // namespace isph
