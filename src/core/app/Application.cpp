@@ -18,11 +18,15 @@ namespace isph {
 namespace {
 
 // Restore or clear what interrupted runs left in the case, and say so: in the log, or on
-// stderr for the tools whose stdout is parsed.
+// stderr for the tools whose stdout is parsed. In a parallel run rank 0 does it (with the
+// processor directories) while the others wait: the ranks would race on the same leftovers.
 void recoverCase(const ApplicationSpec& spec, const ArgList& args) {
   if (spec.recovery == CaseRecovery::none) return;
-  const StagingRecovery r =
-      recoverStaging(args.casePath(), {.ownsForeignHosts = spec.recovery == CaseRecovery::allHosts});
+  StagingRecovery r;
+  if (isMasterRank()) {
+    r = recoverStaging(args.casePath(), {.ownsForeignHosts = spec.recovery == CaseRecovery::allHosts});
+  }
+  agreeOverRanks(0);  // (a barrier in a parallel run: no rank reads the case before it is recovered)
   if (r.log.empty()) return;
   std::ostream& out = spec.banner ? std::cout : std::cerr;
   out << fmt::format("Interrupted writes in the case: {} restored, {} removed, {} left alone\n", r.restored,
