@@ -25,6 +25,7 @@
 #include "isph/VelocityCorrection.hpp"
 #include "isph/WallPenetrationGuard.hpp"
 #include "isph/parallel/GhostExchange.hpp"
+#include "isph/parallel/StepStateOverRanks.hpp"
 #include "parallel/Reduce.hpp"
 #include "particles/CloudIO.hpp"
 
@@ -67,8 +68,11 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
   ps_.cloud = distributed_ ? distributed_->read(time, cloudName) : readCloud(time.startPath(), cloudName);
   const int dim = ps_.cloud.properties.dimension;
   // What the run that wrote this time carried between its steps (StepState.hpp): a restart
-  // takes it up, so that it continues as the uninterrupted run.
-  const std::optional<StepState> state = readStepState(time.timePath());
+  // takes it up, so that it continues as the uninterrupted run (parallel: the ranks' entries
+  // gathered, as the particles are partitioned anew; StepStateOverRanks.hpp).
+  const std::optional<StepState> state =
+      distributed_ ? readStepStateOverRanks(time.startPath(), time.decomposedStart(), ps_.cloud.origId)
+                   : readStepState(time.startPath());
   if (state) info("    solver state (step {}) read from {}/uniform/isphState", state->stepsTaken, time.timeName());
   // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
   // reordered below.
