@@ -7,6 +7,7 @@
 #include "core/Error.hpp"
 #include "core/fields/FieldIO.hpp"
 #include "core/time/TimeName.hpp"
+#include "parallel/Reduce.hpp"
 
 namespace isph {
 
@@ -48,34 +49,53 @@ void checkWriteInterval(const Time& time, double firstDeltaT) {
   }
 }
 
+namespace {
+
+// The box from `lo` to `hi` enlarged each way by its largest side and 10 dx.
+SceneDomain enlarged(const Vec3& lo, const Vec3& hi, double dx) {
+  const Vec3 margin = Vec3::Constant((hi - lo).maxCoeff() + 10 * dx);
+  return {lo - margin, hi + margin};
+}
+
+}  // namespace
+
 SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx) {
-  SceneDomain d;
-  if (positions.empty()) return d;
-  d.min = d.max = positions.front();
+  if (positions.empty()) return {};
+  Vec3 lo = positions.front(), hi = positions.front();
   for (const auto& x : positions) {
-    d.min = d.min.cwiseMin(x);
-    d.max = d.max.cwiseMax(x);
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
   }
-  const Vec3 margin = Vec3::Constant((d.max - d.min).maxCoeff() + 10 * dx);
-  d.min -= margin;
-  d.max += margin;
-  return d;
+  return enlarged(lo, hi, dx);
+}
+
+SceneDomain sceneDomainOverRanks(const std::vector<Vec3>& positions, double dx) {
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& x : positions) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  lo = minOverRanks(lo), hi = maxOverRanks(hi);  // parallel: all ranks
+  return hi.x() < lo.x() ? SceneDomain{} : enlarged(lo, hi, dx);
 }
 
 SceneDomain startDomain(const Time& time, const std::string& cloudName, const ParticleSystem& ps,
                         const std::optional<SceneDomain>& kept) {
-  const auto cloudDir = time.timePath() / "lagrangian" / cloudName;
+  // (parallel: the start time's folder is processor<rank>/<time>, or the case's own <time> for
+  // an undecomposed start; time.timePath() is where the run writes)
+  const auto cloudDir = time.startPath() / "lagrangian" / cloudName;
   if (kept) {
     checkInsideDomain(ps, *kept, cloudDir,
                       "that of the case's first particles (uniform/isphState)");
     return *kept;
   }
-  // A time written without the state (or the first one): the domain of the first time's particles.
+  // A time written without the state (or the first one): the domain of the first time's
+  // particles (the case's own first time, read whole by every rank of a parallel run).
   const auto times = listTimes(time.path());
   const auto first =
       times.empty() ? cloudDir : time.path() / times.front().name / "lagrangian" / cloudName;
   if (first == cloudDir || !std::filesystem::exists(first / "positions"))
-    return sceneDomain(ps.cloud.positions, ps.dx);
+    return sceneDomainOverRanks(ps.cloud.positions, ps.dx);
   const SceneDomain domain = sceneDomain(readField<Vec3>(first / "positions"), ps.dx);
   checkInsideDomain(ps, domain, cloudDir,
                     fmt::format("the bounding box of the particles of {}", first.string()));
@@ -85,7 +105,7 @@ SceneDomain startDomain(const Time& time, const std::string& cloudName, const Pa
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
                        const std::filesystem::path& cloudDir, const std::string& domainSource) {
   const auto& c = ps.cloud;
-  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {  // (parallel: this rank's own)
     const Vec3& x = c.positions[a];
     if ((x.array() >= domain.min.array()).all() && (x.array() <= domain.max.array()).all())
       continue;
@@ -94,9 +114,11 @@ void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
     const auto ids = readField<label>(cloudDir / "origId");
     const auto at = std::find(ids.begin(), ids.end(), c.origId[a]);
     const std::size_t index = static_cast<std::size_t>(at - ids.begin());
-    const int line = fieldValueLine<Vec3>(file, index);
-    const std::string where = line > 0 ? fmt::format("line {}", line)
-                                       : fmt::format("value {} of {}", index + 1, ids.size());
+    // (parallel: a particle read by another rank, from another processor directory, is not in it)
+    const int line = at == ids.end() ? 0 : fieldValueLine<Vec3>(file, index);
+    const std::string where = at == ids.end() ? std::string("read by another rank")
+                              : line > 0      ? fmt::format("line {}", line)
+                                              : fmt::format("value {} of {}", index + 1, ids.size());
     fatalIOError(
         SourceLocation{std::make_shared<const std::string>(file.string()), line, 0},
         fmt::format(

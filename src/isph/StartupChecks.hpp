@@ -33,10 +33,13 @@ struct SceneDomain {
 // The domain of the particles at `positions` (the case's first particles): their bounding box
 // enlarged each way by its largest side and 10 dx.
 SceneDomain sceneDomain(const std::vector<Vec3>& positions, double dx);
+// The same over the positions of every rank of a parallel run (collective; serial: the above).
+SceneDomain sceneDomainOverRanks(const std::vector<Vec3>& positions, double dx);
 
 // The domain of a run starting at `time`: `kept` (a restart's, from its StepState), else that
-// of the particles of the case's first time directory, else of `ps`'s; the particles of `ps`
-// are checked to lie in it (checkInsideDomain) unless it is theirs.
+// of the particles of the case's first time directory, else of `ps`'s (over the ranks); the
+// particles of `ps` (this rank's own) are checked to lie in it (checkInsideDomain) unless it is
+// theirs. Collective in a parallel run.
 SceneDomain startDomain(const Time& time, const std::string& cloudName, const ParticleSystem& ps,
                         const std::optional<SceneDomain>& kept);
 
