@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <numeric>
+#include <type_traits>
 
 #include "core/Error.hpp"
 #include "core/Types.hpp"
@@ -60,6 +61,51 @@ void copyUniform(const fs::path& fromTime, const fs::path& toTime) {
 }
 
 fs::path cloudDir(const fs::path& timeDir, const std::string& cloud) { return timeDir / "lagrangian" / cloud; }
+
+template <class T>
+T zeroValue() {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return T{0};
+  } else {
+    return T::Zero();
+  }
+}
+
+// The field files of uniform/ (the solver's arrays by origId, StepState.hpp) of the
+// processors' <timeName>, merged into <target>/uniform: entry id from the processor that holds
+// particle origId id (`owner`), zero for one that none holds. A processor without the file (one
+// that had no entries) gives none. The other files of uniform/ are processor0's (copyUniform).
+void mergeUniformFields(const fs::path& caseDir, int nProcs, const std::string& timeName, const std::vector<int>& owner,
+                        const fs::path& target) {
+  std::vector<std::string> names;
+  for (int p = 0; p < nProcs; ++p) {
+    for (const std::string& name : listFields(caseDir / processorName(p) / timeName / "uniform")) {
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+  }
+  for (const std::string& name : names) {
+    std::vector<fs::path> files;
+    for (int p = 0; p < nProcs; ++p) files.push_back(caseDir / processorName(p) / timeName / "uniform" / name);
+    const auto present = std::find_if(files.begin(), files.end(), [](const fs::path& f) { return fs::is_regular_file(f); });
+    if (!isFieldClass(headerClass(*present))) continue;
+    const FieldFileInfo info = readFieldInfo(*present);
+    withFieldType(info.className, [&]<class T>() {
+      std::vector<std::vector<T>> parts(files.size());
+      std::size_t size = 0;
+      for (std::size_t p = 0; p < files.size(); ++p) {
+        if (fs::is_regular_file(files[p])) parts[p] = readField<T>(files[p]);
+        size = std::max(size, parts[p].size());
+      }
+      std::vector<T> merged(size, zeroValue<T>());
+      for (std::size_t id = 0; id < size && id < owner.size(); ++id) {
+        if (owner[id] < 0) continue;
+        const auto& part = parts[static_cast<std::size_t>(owner[id])];
+        if (id < part.size()) merged[id] = part[id];
+      }
+      writeField(target / "uniform" / name, merged, optionsLike(info, "uniform"));
+    });
+  }
+}
 
 }  // namespace
 
@@ -134,6 +180,7 @@ std::size_t reconstructTime(const fs::path& caseDir, int nProcs, const std::stri
   const fs::path first = caseDir / processorName(0) / timeName;
   if (!fs::is_directory(first)) fatalError(fmt::format("{} does not exist", first.string()));
   std::size_t total = 0;
+  std::vector<int> owner;  // by origId: the processor that holds the particle
   for (const std::string& cloud : cloudNames(first)) {
     // Every processor's particles of this cloud: their kinds and origIds give the order.
     std::vector<label> kind, origId;
@@ -148,6 +195,14 @@ std::size_t reconstructTime(const fs::path& caseDir, int nProcs, const std::stri
       kind.insert(kind.end(), k.begin(), k.end());
       origId.insert(origId.end(), id.begin(), id.end());
       counts.push_back(k.size());
+    }
+    for (int p = 0, i = 0; p < nProcs; ++p) {
+      for (std::size_t k = 0; k < counts[static_cast<std::size_t>(p)]; ++k, ++i) {
+        const label id = origId[static_cast<std::size_t>(i)];
+        if (id < 0) continue;
+        if (static_cast<std::size_t>(id) >= owner.size()) owner.resize(static_cast<std::size_t>(id) + 1, -1);
+        owner[static_cast<std::size_t>(id)] = p;
+      }
     }
     std::vector<std::size_t> order(kind.size());
     std::iota(order.begin(), order.end(), 0);
@@ -187,6 +242,7 @@ std::size_t reconstructTime(const fs::path& caseDir, int nProcs, const std::stri
     total += kind.size();
   }
   copyUniform(first, target);
+  mergeUniformFields(caseDir, nProcs, timeName, owner, target);
   return total;
 }
 
@@ -199,7 +255,13 @@ DecomposedTime::DecomposedTime(const fs::path& caseDir, const std::string& timeN
   temporary_ = true;
   fs::remove_all(path_);
   fs::create_directories(path_);
-  reconstructTime(caseDir, nProcessorDirectories(caseDir), timeName, path_);
+  try {
+    reconstructTime(caseDir, nProcessorDirectories(caseDir), timeName, path_);
+  } catch (...) {  // (a time a processor lacks: the caller skips it; the folder must not stay)
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+    throw;
+  }
 }
 
 DecomposedTime::~DecomposedTime() {

@@ -2,6 +2,7 @@
 // The processor directories of a decomposed case, as OpenFOAM's:
 //   <case>/processor<i>/<time>/lagrangian/<cloud>/<field>   rank i's particles, every field
 //   <case>/processor<i>/<time>/uniform/time                 the time state (restarts)
+//   <case>/processor<i>/<time>/uniform/isphState, ...        the solver state (StepState.hpp)
 // What decomposePar writes and reconstructPar merges back, what a parallel solver run reads
 // and writes, and what a post-processing utility given -parallel reads (DecomposedTime).
 // Every field file of a cloud travels, whatever its name (the solver's tau, wallFriction,
@@ -29,7 +30,9 @@ void decomposeTime(const std::filesystem::path& caseDir, const std::string& time
 
 // Merges <case>/processor<i>/<timeName> (i < nProcs) into the time folder `target` (normally
 // the staging path of a StagedDirectory): every cloud and field, the particles ordered
-// material, wall, dummy and each kind by origId; uniform/ from processor0. FatalError naming
+// material, wall, dummy and each kind by origId; uniform/ from processor0, but its field files
+// (the solver's arrays by origId: each rank writes its own particles' entries, StepState.hpp)
+// merged, each entry from the processor that holds that particle. FatalError naming
 // the processor when one lacks the time, a cloud or a field, or the origIds repeat.
 // Returns the number of particles.
 std::size_t reconstructTime(const std::filesystem::path& caseDir, int nProcs, const std::string& timeName,
@@ -40,8 +43,8 @@ std::vector<Instant> decomposedTimes(const std::filesystem::path& caseDir);
 
 // A time as a post-processing utility reads it: <case>/<time>, or, for a decomposed case
 // (-parallel), processor*/<time> merged into a hidden folder of the case that is removed
-// afterwards (a staging name: listTimes skips it, and the recovery at the start of the next application
-// clears it if this one was killed; StagingRecovery.hpp).
+// afterwards, also when the merge fails (a staging name: listTimes skips it, and the recovery
+// at the start of the next application clears it if this one was killed; StagingRecovery.hpp).
 class DecomposedTime {
  public:
   DecomposedTime(const std::filesystem::path& caseDir, const std::string& timeName, bool decomposed);

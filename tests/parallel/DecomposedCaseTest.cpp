@@ -106,6 +106,52 @@ TEST(DecomposedCase, DecomposeThenReconstructGivesBackEveryFieldExactly) {
   EXPECT_EQ(DecomposedTime(c.dir, "0.5", false).path(), c.dir / "0.5");
 }
 
+// The solver's arrays by origId in uniform/ (StepState.hpp: wall friction states, slip
+// directions), each processor's with its own particles' entries and others that are not (zero,
+// or a stale copy): the merged time has each particle's entries from the processor holding it.
+TEST(DecomposedCase, ReconstructTakesEachEntryOfTheSolverStateFromTheProcessorHoldingTheParticle) {
+  if (thisRank() != 0) GTEST_SKIP() << "files only: rank 0 does it";
+  Case c;
+  const int nParts = 3;
+  std::vector<int> part(c.cloud.size());
+  for (std::size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>((i * 5) % nParts);
+  decomposeTime(c.dir, "0.5", "particles", part, nParts);
+  auto stateOf = [](std::size_t id) { return static_cast<label>(1 + id % 2); };
+  auto directionOf = [](std::size_t id) { return Vec3(0.1 * static_cast<double>(id), -1.0 / 3.0, 2.0); };
+  const FieldWriteOptions options{WriteFormat::binary, 17, "uniform"};
+  for (int p = 0; p < nParts - 1; ++p) {  // the last processor had no entries: no files
+    // processor0's as long as the cloud with stale entries, processor1's as its largest origId needs
+    std::size_t size = c.cloud.size();
+    if (p == 1) {
+      while (part[size - 1] != p) --size;
+    }
+    std::vector<label> states(size, p == 0 ? 2 : 0);
+    std::vector<Vec3> directions(states.size(), Vec3(9, 9, 9));
+    for (std::size_t id = 0; id < states.size(); ++id) {
+      if (part[id] != p) continue;
+      states[id] = stateOf(id);
+      directions[id] = directionOf(id);
+    }
+    const fs::path uniform = c.dir / processorName(p) / "0.5" / "uniform";
+    writeField(uniform / "frictionStates", states, options);
+    writeField(uniform / "slipDirections", directions, options);
+  }
+  const fs::path merged = c.dir / "merged";
+  fs::create_directories(merged);
+  reconstructTime(c.dir, nParts, "0.5", merged);
+  const auto states = readField<label>(merged / "uniform/frictionStates");
+  const auto directions = readField<Vec3>(merged / "uniform/slipDirections");
+  ASSERT_EQ(states.size(), c.cloud.size()) << "as long as the longest processor's";
+  ASSERT_EQ(directions.size(), c.cloud.size());
+  EXPECT_EQ(readFieldInfo(merged / "uniform/frictionStates").format, WriteFormat::binary);
+  for (std::size_t id = 0; id < states.size(); ++id) {
+    const bool written = part[id] < nParts - 1;
+    EXPECT_EQ(states[id], written ? stateOf(id) : 0) << "origId " << id << " of processor" << part[id];
+    EXPECT_EQ(directions[id], written ? directionOf(id) : Vec3(Vec3::Zero())) << "origId " << id;
+  }
+  EXPECT_TRUE(fs::exists(merged / "uniform/time")) << "the other files of uniform/ are processor0's";
+}
+
 TEST(DecomposedCase, AMissingProcessorTimeOrAGapIsAnError) {
   if (thisRank() != 0) GTEST_SKIP() << "files only: rank 0 does it";
   Case c;
@@ -113,6 +159,9 @@ TEST(DecomposedCase, AMissingProcessorTimeOrAGapIsAnError) {
   fs::remove_all(c.dir / "processor1" / "0.5");
   const fs::path merged = c.dir / "merged";
   EXPECT_THROW(reconstructTime(c.dir, 2, "0.5", merged), FatalError);
+  EXPECT_THROW(DecomposedTime(c.dir, "0.5", true), FatalError);
+  EXPECT_EQ(std::distance(fs::directory_iterator(c.dir), fs::directory_iterator()), 3)
+      << "0.5 and the processor folders: the failed view's hidden folder is gone";
   fs::rename(c.dir / "processor1", c.dir / "processor2");
   EXPECT_THROW(nProcessorDirectories(c.dir), FatalError);
 }
