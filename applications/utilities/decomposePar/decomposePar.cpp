@@ -16,6 +16,7 @@
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/TimeOptions.hpp"
+#include "core/io/AtomicFile.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "parallel/DecomposedCase.hpp"
 #include "parallel/DecompositionDict.hpp"
@@ -75,7 +76,9 @@ void run(const isph::ArgList& args) {
       isph::fatalError(fmt::format("{} holds {} processor directories: remove them, or run decomposePar -force",
                                    caseDir.string(), existing));
     }
-    for (int i = 0; i < existing; ++i) fs::remove_all(caseDir / isph::processorName(i));
+    // (from the last: a kill meanwhile leaves processor0.. without a gap, each out of view
+    // before it is deleted, AtomicFile.hpp)
+    for (int i = existing - 1; i >= 0; --i) isph::removeDirectoryAtomically(caseDir / isph::processorName(i));
     isph::info("Removed {} processor directories", existing);
   }
   const auto times = isph::selectedTimes(args);
