@@ -14,10 +14,15 @@ struct ParallelRun {
   // must take alike, such as stopping after a signal or re-reading a changed controlDict.
   // Null without MPI.
   int (*maxOverRanks)(int value) = nullptr;
+  // The smallest of a double over the ranks (collective), as maxOverRanks: the latest time that
+  // every processor directory holds (Time). Null without MPI.
+  double (*minOverRanks)(double value) = nullptr;
 };
 
 // max over the ranks of a parallel run; the value itself otherwise.
 int agreeOverRanks(int value);
+// min over the ranks of a parallel run; the value itself otherwise.
+double agreeOnMinimum(double value);
 
 const ParallelRun& parallelRun();
 void setParallelRun(const ParallelRun& run);

@@ -18,6 +18,11 @@ int maxOverAllRanks(int value) {
   MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   return out;
 }
+double minOverAllRanks(double value) {
+  double out = value;
+  MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  return out;
+}
 }  // namespace
 
 ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
@@ -31,7 +36,8 @@ ParallelEnvironment::ParallelEnvironment(int& argc, char**& argv) {
     if (MPI_Init(&argc, &argv) != MPI_SUCCESS) fatalError("ParallelEnvironment: MPI_Init failed");
     ownsMpi_ = true;
   }
-  setParallelRun({.rank = rank(), .nProcs = nProcs(), .abort = abortAllRanks, .maxOverRanks = maxOverAllRanks});
+  setParallelRun({.rank = rank(), .nProcs = nProcs(), .abort = abortAllRanks, .maxOverRanks = maxOverAllRanks,
+                  .minOverRanks = minOverAllRanks});
   if (!hypreInitialised) {
     HYPRE_Init();
     hypreInitialised = true;

@@ -73,6 +73,7 @@ Time::Time(const fs::path& caseDir, const std::string& processorDir)
     times = listTimes(caseDir_);
     startRoot = caseDir_;
   }
+  if (!processorDir_.empty() && settings_.startFrom == StartFrom::latestTime) keepCommonTimes(times);
   const Instant* start = nullptr;
   switch (settings_.startFrom) {
     case StartFrom::firstTime:
@@ -94,6 +95,26 @@ Time::Time(const fs::path& caseDir, const std::string& processorDir)
   restoreTimeState();
   startTime_ = value_;
   startName_ = name_;
+}
+
+// A parallel run's latest time is the latest that every processor directory holds: a run
+// killed while its ranks wrote (or purged) leaves a time in some of them only.
+void Time::keepCommonTimes(std::vector<Instant>& times) const {
+  bool dropped = false;
+  for (;;) {
+    if (agreeOverRanks(times.empty())) break;  // (a rank without times: DistributedParticles says so)
+    // (the ranks' times of one run have the same names, so the same values)
+    const double common = agreeOnMinimum(times.back().value);
+    for (; !times.empty() && times.back().value > common; dropped = true) times.pop_back();
+    const bool held = !times.empty() && times.back().value == common;
+    if (!agreeOverRanks(!held)) break;  // every rank holds it
+    if (held) times.pop_back(), dropped = true;
+  }
+  if (agreeOverRanks(dropped) && !times.empty()) {
+    warning(fmt::format("a time later than {} is not in every processor directory of {} (a parallel run was "
+                        "stopped while it wrote): the run starts from {}, the latest time all of them hold",
+                        times.back().name, caseDir_.string(), times.back().name));
+  }
 }
 
 // Restart contract: <start>/uniform/time holds the exact value, the index and the steps.

@@ -92,6 +92,8 @@ class Time {
 
  private:
   void restoreTimeState();
+  // Parallel, startFrom latestTime: `times` cut to the latest time every rank holds (collective).
+  void keepCommonTimes(std::vector<Instant>& times) const;
   void advance();
   void setWriteTime();
 
