@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "CaseRunner.hpp"
+#include "core/time/TimeName.hpp"
 #include "particles/CloudIO.hpp"
 #include "postProcessing/sampling/RunOut.hpp"
 #include "postProcessing/sampling/SurfaceProfile.hpp"
@@ -319,6 +321,65 @@ TEST(ParallelCases, RestartOnTwoRanksMatchesTheUninterruptedRun) {
   std::printf("largest difference: position %.3g dx, velocity %.3g m/s\n", maxDx / dx, maxDu);
   EXPECT_LT(maxDx, 1e-3 * dx);
   EXPECT_LT(maxDu, 1e-3);
+}
+
+// Crash safety in a parallel run (issue 34's, in the processor directories): what interrupted
+// writes left in processor<i>/ is recovered once, by rank 0, before the ranks read (a replace
+// caught between its renames restored, an unfinished write and a purge's rest removed: the
+// ranks raced on them before); purgeWrite purges each processor's own times. A time that one
+// rank had written when the run was killed and another had not (removed here from processor1)
+// is skipped by reconstructPar with a warning, and a restart (startFrom latestTime) starts from
+// the latest time both processors hold.
+TEST(ParallelCases, TwoRanksRecoverTheProcessorDirectoriesAndRestartFromTheLatestCommonTime) {
+  CaseRunner c("damBreak", "parallelRecovery");
+  c.set("system/particleMeshDict", "spacing", std::to_string(0.05715 / 10));
+  c.set("system/controlDict", "endTime", "0.003");
+  c.set("system/controlDict", "writeInterval", "0.001");
+  c.set("system/controlDict", "purgeWrite", "2");
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
+  std::ofstream(c.path() / "system" / "decomposeParDict")
+      << "FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+      << "numberOfSubdomains 2;\nmethod zoltan;\nzoltanCoeffs { algorithm RCB; }\n";
+  ASSERT_EQ(c.run(DECOMPOSEPAR_EXE, "decomposePar"), 0);
+  namespace fs = std::filesystem;
+  const fs::path p0 = c.path() / "processor0", p1 = c.path() / "processor1";
+  fs::rename(p1 / "0", p1 / ".0.old.4000000@otherhost");  // a replace of 0 killed between its renames
+  fs::create_directories(p0 / ".0.002.tmp.4000000@otherhost" / "lagrangian");  // an unfinished write
+  fs::create_directories(p0 / ".0.001.trash.4000000@otherhost" / "uniform");  // a purge's rest
+  const std::string ranks = "-np 2 --oversubscribe --bind-to none --mca mpi_yield_when_idle 1 '" +
+                            std::string(SOLVER_EXE) + "' -parallel";
+  ASSERT_EQ(c.run(MPIRUN_EXE, "isphLandslideFoam", ranks, mpiEnvironment), 0)
+      << "see " << c.path() / "log.isphLandslideFoam";
+  const std::string log = isph::test::readText(c.path() / "log.isphLandslideFoam");
+  const std::string report = "Interrupted writes in the case: 1 restored, 2 removed, 0 left alone";
+  const auto at = log.find(report);
+  EXPECT_NE(at, std::string::npos) << log.substr(0, 3000);
+  EXPECT_EQ(log.find(report, at + 1), std::string::npos) << "reported once, by rank 0";
+  auto listing = [](const fs::path& dir) {
+    std::string names;
+    for (const auto& t : listTimes(dir)) names += (names.empty() ? "" : " ") + t.name;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      if (e.path().filename().string()[0] == '.') names += " hidden:" + e.path().filename().string();
+    }
+    return names;
+  };
+  for (const fs::path& p : {p0, p1}) {
+    EXPECT_EQ(listing(p), "0 0.002 0.003") << p << ": the start time, the last two (purgeWrite 2), nothing hidden";
+  }
+
+  fs::remove_all(p1 / "0.003");  // killed after rank 0 wrote 0.003, before rank 1 had
+  ASSERT_EQ(c.run(RECONSTRUCTPAR_EXE, "reconstructPar"), 0) << "see " << c.path() / "log.reconstructPar";
+  EXPECT_EQ(listing(c.path()), "0 0.002") << "0.003 skipped";
+  EXPECT_NE(isph::test::readText(c.path() / "log.reconstructPar").find("time 0.003 is skipped"), std::string::npos);
+  c.set("system/controlDict", "endTime", "0.004");
+  ASSERT_EQ(c.run(MPIRUN_EXE, "isphLandslideFoam", ranks, mpiEnvironment), 0)
+      << "see " << c.path() / "log.isphLandslideFoam";
+  EXPECT_NE(isph::test::readText(c.path() / "log.isphLandslideFoam").find("Reading cloud 'particles' from 0.002"),
+            std::string::npos)
+      << "the restart starts from the latest time both processors hold";
+  for (const fs::path& p : {p0, p1}) {
+    EXPECT_EQ(listing(p), "0 0.002 0.003 0.004") << p << ": 0.003 written again (processor0's replaced)";
+  }
 }
 
 }  // namespace
