@@ -20,6 +20,7 @@
 #include "core/Types.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "core/time/ControlDict.hpp"
+#include "core/time/TimeName.hpp"
 
 namespace isph {
 

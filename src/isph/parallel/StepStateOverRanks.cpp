@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <span>
+#include <type_traits>
 
 #include "core/Error.hpp"
 #include "parallel/Reduce.hpp"
