@@ -28,6 +28,12 @@ static_assert(
 
 namespace {
 
+// A uniform list N{value} is a few bytes of text for N values in memory. Where the caller knows
+// the particle count (every field but the positions, which set it) N must equal it; elsewhere N
+// is limited as the dictionary's lists are (DictionaryLimits::maxListElements): the fuzzer's
+// 16-byte "999999943{0}" asked for 4 GB. A list N( ... ) is bounded by the file's own size.
+constexpr std::size_t maxUniformWithoutCount = std::size_t{1} << 24;
+
 // ---- writing ---------------------------------------------------------------------------
 
 // printf's %.{precision}g (std::to_chars: about twice as fast as fmt's precision path).
@@ -229,6 +235,13 @@ std::vector<T> readData(FieldTextScanner& in, WriteFormat format,
   const auto n = static_cast<std::size_t>(n64);
   checkSize(n);
   if (in.accept('{')) {  // N{value}: N copies of one value
+    if (!expectedSize && n > maxUniformWithoutCount) {
+      fatalIOError(start, fmt::format("{}: a uniform list N{{value}} of {} values ({} for a few bytes of "
+                                      "text) where the particle count is not yet known is refused above "
+                                      "{} values; write the values as a list N( ... )",
+                                      in.context(), n, bytesText(static_cast<double>(n) * sizeof(T)),
+                                      maxUniformWithoutCount));
+    }
     const T v = readValue<T>(in);
     in.expect('}', "'}' closing the uniform list N{value}");
     return std::vector<T>(n, v);

@@ -114,6 +114,26 @@ TEST(FieldIOErrors, NonFiniteBinaryValuesAreRefused) {
   EXPECT_TRUE(contains(expectFatal([&] { readField<scalar>(p); }).report(), "(inf)"));
 }
 
+// Found by fuzzing (tests/fuzz/regressions/fieldBinary/): a positions-like read (no particle
+// count known) of "999999943{0}" allocated 4 GB for 16 bytes of text. Refused above 2^24 values
+// where the count is unknown; where it is known, N must equal it as before.
+TEST(FieldIOErrors, HugeUniformListWithoutACountIsRefused) {
+  TempDir tmp;
+  const fs::path id = tmp / "origId";
+  writeText(id, header("labelField", "binary", "LSB;label=32;scalar=64") + "999999943{0}\n");
+  expectErrorAt(expectFatal([&] { readField<label>(id); }), id, 11,
+                {"a uniform list N{value} of 999999943 values", "refused above 16777216 values"});
+  writeText(id, header("labelField") + "16777217{7}\n");
+  expectErrorAt(expectFatal([&] { readField<label>(id); }), id, 10, {"refused above 16777216 values"});
+  writeText(id, header("labelField") + "16777216{7}\n");  // at the limit: read
+  const auto values = readField<label>(id);
+  EXPECT_EQ(values.size(), std::size_t{1} << 24);
+  EXPECT_EQ(values.back(), 7);
+  writeText(id, header("labelField") + "20000000{7}\n");  // the count known: its own check
+  EXPECT_EQ(readField<label>(id, 20000000).size(), 20000000u);
+  expectErrorAt(expectFatal([&] { readField<label>(id, 5); }), id, 10, {"holds 20000000 values but 5 were expected"});
+}
+
 TEST(FieldIOErrors, ClassMismatch) {
   TempDir tmp;
   const fs::path file = tmp / "d";
