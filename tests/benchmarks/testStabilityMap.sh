@@ -10,7 +10,7 @@ build=$2
 work=$(mktemp -d /tmp/isphTest-stabilityMap.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 mkdir "$work/stabilityMap"   # the scripts, not a user's runs/
-cp "$project/tutorials/benchmarks/stabilityMap"/{Allrun,classify,plotMaps} "$work/stabilityMap/"
+cp "$project/tutorials/benchmarks/stabilityMap"/{Allrun,classify,plotMaps,table} "$work/stabilityMap/"
 export ISPH_PROJECT_DIR=$project ISPH_BUILD_DIR=$build
 "$work/stabilityMap/Allrun" -smoke -timeout 40
 csv=$work/stabilityMap/stability.csv
