@@ -51,21 +51,31 @@ std::vector<std::byte> ParticleFields::pack(const std::vector<std::size_t>& whic
   return out;
 }
 
-void ParticleFields::append(const std::byte* packed, std::size_t count) {
-  const std::size_t n = size(), stride = bytesPerParticle();
+void ParticleFields::append(const std::byte* packed, std::size_t count) { insert(size(), packed, count); }
+
+void ParticleFields::keep(const std::vector<std::size_t>& which) {
+  const std::size_t n = size();
+  for (const std::size_t i : which) {
+    if (i >= n) fatalError(fmt::format("ParticleFields::keep: particle {} of {}", i, n));
+  }
+  for (Field& f : fields_) f.gather(f.vector, which);
+}
+
+void ParticleFields::erase(std::size_t first, std::size_t count) {
+  if (first + count > size()) fatalError(fmt::format("ParticleFields::erase: [{}, {}) of {}", first, first + count, size()));
+  for (Field& f : fields_) f.erase(f.vector, first, count);
+}
+
+void ParticleFields::insert(std::size_t at, const std::byte* packed, std::size_t count) {
+  if (at > size()) fatalError(fmt::format("ParticleFields::insert: before {} of {}", at, size()));
+  const std::size_t stride = bytesPerParticle();
   std::size_t offset = 0;
   for (Field& f : fields_) {
-    f.resize(f.vector, n + count);
-    std::byte* to = f.data(f.vector) + n * f.bytes;
+    f.insert(f.vector, at, count);
+    std::byte* to = f.data(f.vector) + at * f.bytes;
     for (std::size_t k = 0; k < count; ++k) std::memcpy(to + k * f.bytes, packed + k * stride + offset, f.bytes);
     offset += f.bytes;
   }
-}
-
-void ParticleFields::keep(const std::vector<std::size_t>& which) {
-  const std::vector<std::byte> kept = pack(which);
-  for (Field& f : fields_) f.resize(f.vector, 0);
-  append(kept.data(), which.size());
 }
 
 }  // namespace isph

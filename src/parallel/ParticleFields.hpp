@@ -3,6 +3,7 @@
 // ParticleCloud and any further arrays the caller adds (a std::vector of a trivially copyable
 // value type each, all of one length), packed into bytes particle by particle for Zoltan's
 // communication package (CommPlan).
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
@@ -24,7 +25,7 @@ class ParticleFields {
     // underneath, though Eigen declares its own copy constructor).
     static_assert(std::is_trivially_destructible_v<T> && std::is_standard_layout_v<T>,
                   "a particle field must be a plain value");
-    fields_.push_back({sizeof(T), &field, &bytesOf<T>, &sizeOf<T>, &resizeOf<T>});
+    fields_.push_back({sizeof(T), &field, &bytesOf<T>, &sizeOf<T>, &gatherOf<T>, &eraseOf<T>, &insertOf<T>});
   }
 
   std::size_t size() const;  // particles (FatalError if the fields differ in length)
@@ -35,6 +36,10 @@ class ParticleFields {
   void append(const std::byte* packed, std::size_t count);
   // Keeps the particles `which`, in that order.
   void keep(const std::vector<std::size_t>& which);
+  // Removes the particles [first, first + count) / inserts `count` packed particles before
+  // particle `at`: the others keep their order, and only those after move (a block move).
+  void erase(std::size_t first, std::size_t count);
+  void insert(std::size_t at, const std::byte* packed, std::size_t count);
 
  private:
   struct Field {
@@ -42,7 +47,9 @@ class ParticleFields {
     void* vector;
     std::byte* (*data)(void*);
     std::size_t (*size)(const void*);
-    void (*resize)(void*, std::size_t);
+    void (*gather)(void*, const std::vector<std::size_t>&);
+    void (*erase)(void*, std::size_t, std::size_t);
+    void (*insert)(void*, std::size_t, std::size_t);
   };
   template <class T>
   static std::byte* bytesOf(void* v) {
@@ -53,8 +60,24 @@ class ParticleFields {
     return static_cast<const std::vector<T>*>(v)->size();
   }
   template <class T>
-  static void resizeOf(void* v, std::size_t n) {
-    static_cast<std::vector<T>*>(v)->resize(n);
+  static void gatherOf(void* v, const std::vector<std::size_t>& which) {
+    auto& field = *static_cast<std::vector<T>*>(v);
+    std::vector<T> out;
+    out.reserve(which.size());
+    for (const std::size_t i : which) out.push_back(field[i]);
+    field.swap(out);
+  }
+  template <class T>
+  static void eraseOf(void* v, std::size_t first, std::size_t count) {
+    auto& field = *static_cast<std::vector<T>*>(v);
+    field.erase(field.begin() + static_cast<long>(first), field.begin() + static_cast<long>(first + count));
+  }
+  template <class T>
+  static void insertOf(void* v, std::size_t at, std::size_t count) {
+    auto& field = *static_cast<std::vector<T>*>(v);  // room for `count` before `at` (filled by the caller)
+    const std::size_t old = field.size();
+    field.resize(old + count);
+    std::move_backward(field.begin() + static_cast<long>(at), field.begin() + static_cast<long>(old), field.end());
   }
 
   std::vector<Field> fields_;

@@ -57,14 +57,7 @@ TEST(Migration, AParticleThatCrossesAPartBoundaryArrivesOnceWithEveryField) {
     }
     EXPECT_EQ(zoltan.partOf(mine.positions[i]), thisRank()) << "particle " << id << " is on the rank of its part";
     const auto a = static_cast<std::size_t>(id);
-    EXPECT_EQ(mine.positions[i], all.positions[a] + Vec3(3 * dx, 0, 0));
-    EXPECT_EQ(mine.U[i], all.U[a]);
-    EXPECT_EQ(mine.p[i], all.p[a]);
-    EXPECT_EQ(mine.material[i], all.material[a]);
-    EXPECT_EQ(mine.kind[i], all.kind[a]);
-    EXPECT_EQ(mine.patch[i], all.patch[a]);
-    EXPECT_EQ(mine.normal[i], all.normal[a]);
-    EXPECT_EQ(mine.mass[i], all.mass[a]);
+    isph::test::expectSameParticle(mine, i, all, a, Vec3(3 * dx, 0, 0));
     EXPECT_EQ(extra[i], 0.5 * id);
     EXPECT_EQ(tag[i], 7 * id);
     ++seen[a];

@@ -47,6 +47,20 @@ inline ParticleCloud everyNth(const ParticleCloud& all, int r, int n) {
   return c;
 }
 
+// Every field of particle i of `c` is particle a's of `ref` (its position moved by `shift`).
+inline void expectSameParticle(const ParticleCloud& c, std::size_t i, const ParticleCloud& ref, std::size_t a,
+                               const Vec3& shift = Vec3::Zero()) {
+  EXPECT_EQ(c.origId[i], ref.origId[a]);
+  EXPECT_EQ(c.positions[i], ref.positions[a] + shift);
+  EXPECT_EQ(c.U[i], ref.U[a]);
+  EXPECT_EQ(c.p[i], ref.p[a]);
+  EXPECT_EQ(c.material[i], ref.material[a]);
+  EXPECT_EQ(c.kind[i], ref.kind[a]);
+  EXPECT_EQ(c.patch[i], ref.patch[a]);
+  EXPECT_EQ(c.normal[i], ref.normal[a]);
+  EXPECT_EQ(c.mass[i], ref.mass[a]);
+}
+
 // Sum of a count over the ranks, as a size.
 inline std::size_t totalOverRanks(std::size_t n) { return sumOverRanks(n); }
 

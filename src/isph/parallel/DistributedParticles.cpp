@@ -152,13 +152,12 @@ void DistributedParticles::beginStep(ParticleSystem& ps, const MaterialTable& ma
 }
 
 void DistributedParticles::dropGhosts(ParticleSystem& ps) {
-  std::vector<std::size_t> keep;
-  for (std::size_t a = 0; a < ps.size(); ++a) {
-    if (ps.isOwned(a)) keep.push_back(a);
-  }
+  // The ghosts of each kind are a block after the own ones: remove the blocks from the back.
   ParticleFields fields(ps.cloud);
   fields.add(parentId_);  // (as the cloud: one per particle, own and ghost)
-  fields.keep(keep);
+  fields.erase(ps.dummyBegin() + ps.nOwnedDummy, ps.nDummy - ps.nOwnedDummy);
+  fields.erase(ps.wallBegin() + ps.nOwnedWall, ps.nWall - ps.nOwnedWall);
+  fields.erase(ps.nOwnedMaterial, ps.nMaterial - ps.nOwnedMaterial);
   ps.nMaterial = ps.nOwnedMaterial;
   ps.nWall = ps.nOwnedWall;
   ps.nDummy = ps.nOwnedDummy;
@@ -226,44 +225,41 @@ void DistributedParticles::buildGhosts(ParticleSystem& ps, const MaterialTable& 
   }
   halo_ = std::make_unique<Halo>(cloud.positions, supportRadius, cloud.properties.dimension, companion);
 
-  // The ghosts' fields appended to the own particles', then the layout of ParticleSystem.hpp.
-  std::vector<label> parent = parentId_;
+  // The ghosts, received in a cloud of their own, then inserted as a block after the own
+  // particles of their kind (the layout of ParticleSystem.hpp): only the blocks after move.
   ParticleFields fields(cloud);
-  fields.add(parent);
+  fields.add(parentId_);
   fields.add(row);
-  {
-    ParticleCloud ghosts;
-    std::vector<label> ghostParent;
-    std::vector<long> ghostRow;
-    ParticleFields ghostFields(ghosts);
-    ghostFields.add(ghostParent);
-    ghostFields.add(ghostRow);
-    halo_->sendParticles(fields, ghostFields);
-    const std::vector<std::byte> packed = ghostFields.pack([&] {
-      std::vector<std::size_t> all(ghosts.size());
-      std::iota(all.begin(), all.end(), 0);
-      return all;
-    }());
-    fields.append(packed.data(), ghosts.size());
+  ParticleCloud ghosts;
+  std::vector<label> ghostParent;
+  std::vector<long> ghostRowOf;
+  ParticleFields ghostFields(ghosts);
+  ghostFields.add(ghostParent);
+  ghostFields.add(ghostRowOf);
+  halo_->sendParticles(fields, ghostFields);
+  std::vector<std::size_t> counts;  // own and ghost, per kind
+  std::vector<std::size_t> ghostLocal(ghosts.size());
+  std::size_t at = 0;
+  for (const label kind : {materialKind, wallKind, dummyKind}) {
+    const std::size_t own = static_cast<std::size_t>(kind == materialKind ? nM : kind == wallKind ? nW : nOwned - nM - nW);
+    std::vector<std::size_t> ofKind;
+    for (std::size_t g = 0; g < ghosts.size(); ++g) {
+      if (ghosts.kind[g] == kind) ofKind.push_back(g);
+    }
+    at += own;
+    const std::vector<std::byte> packed = ghostFields.pack(ofKind);
+    fields.insert(at, packed.data(), ofKind.size());
+    for (std::size_t k = 0; k < ofKind.size(); ++k) ghostLocal[ofKind[k]] = at + k;
+    at += ofKind.size();
+    counts.push_back(own);
+    counts.push_back(ofKind.size());
   }
   const std::size_t nLocal = cloud.size();
-  std::vector<std::size_t> order;
-  std::vector<std::size_t> counts;  // own and ghost, per kind
-  for (const label kind : {materialKind, wallKind, dummyKind}) {
-    for (const bool own : {true, false}) {
-      const std::size_t before = order.size();
-      for (std::size_t i = own ? 0 : nOwned; i < (own ? nOwned : nLocal); ++i) {
-        if (cloud.kind[i] == kind) order.push_back(i);
-      }
-      counts.push_back(order.size() - before);
-    }
+  // An own particle moved up by the ghosts inserted before it.
+  std::vector<std::size_t> sendLocal;
+  for (const std::size_t i : halo_->sent()) {
+    sendLocal.push_back(i < nM ? i : i < nM + nW ? i + counts[1] : i + counts[1] + counts[3]);
   }
-  fields.keep(order);
-  std::vector<std::size_t> placeOf(nLocal);
-  for (std::size_t k = 0; k < nLocal; ++k) placeOf[order[k]] = k;
-  std::vector<std::size_t> sendLocal, ghostLocal;
-  for (const std::size_t i : halo_->sent()) sendLocal.push_back(placeOf[i]);
-  for (std::size_t g = nOwned; g < nLocal; ++g) ghostLocal.push_back(placeOf[g]);
 
   ps.nOwnedMaterial = counts[0];
   ps.nMaterial = counts[0] + counts[1];
@@ -275,7 +271,6 @@ void DistributedParticles::buildGhosts(ParticleSystem& ps, const MaterialTable& 
   ps.halo = halo_.get();
   ps.firstRow = firstRow_;
   ps.ghostRow.assign(row.begin() + static_cast<long>(ps.nOwnedMaterial), row.begin() + static_cast<long>(ps.nMaterial));
-  parentId_ = std::move(parent);
 
   // What initialiseParticleSystem set for every particle: density, volume, dummy-to-wall.
   const double wallArea = ps.dimension == 3 ? ps.dx * ps.dx * ps.dx : ps.dx * ps.dx;
