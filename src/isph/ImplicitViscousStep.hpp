@@ -11,7 +11,7 @@
 // `lastIncrement`, that plus the last step's viscous increment u* − uⁿ − dt g of the particle
 // (scaled by dt/dt_last). In slow, largely rigid flows the increment changes little from step
 // to step and the second saves about a fifth of the iterations (column collapse, granular
-// slope); in fast flow onto a barrier it costs a seventh more (velocitySolve/README.md). Walls
+// slope); in fast flow onto a barrier it costs a seventh more (doc/notes/velocitySolve.md). Walls
 // (u_w = 0) add κ_aw to the diagonal for materials that stick to walls, with κ_aw (dt g +
 // (u_aⁿ·n) n) on the right: the no-slip term acts on the tangential velocity of time n and
 // leaves the wall-normal motion and the gravity increment to the PPE, as the explicit form

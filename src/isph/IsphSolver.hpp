@@ -27,7 +27,7 @@
 // slope between end walls (granularAtRest) stays put (0.85 mm) but ends with p 20 % (L2) off
 // the infinite-slope lithostatic field, its end walls taking load as buttresses (16 % with
 // the gradient form, a uniform excess of 7 % of ρ g H; the barrier's deposit then presses on
-// the barrier with more than its along-bed weight: columnCollapse/README.md).
+// the barrier with more than its along-bed weight: doc/notes/columnCollapse.md).
 #include <filesystem>
 #include <memory>
 #include <optional>

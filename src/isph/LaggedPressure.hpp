@@ -7,7 +7,7 @@
 //   reaction that the Coulomb friction is limited by. Where the support is cut (the free
 //   surface, a front) it carries an error of order pⁿ_a/(ρ h) that the increment, corrected
 //   with the difference form of Eq. 11, does not remove: a granular column collapsing with it
-//   ran off the end of its floor (columnCollapse/README.md).
+//   ran off the end of its floor (doc/notes/columnCollapse.md).
 // - gradient: −∇p̃_a/ρ_a with the renormalised difference gradient of Eq. 11 itself
 //   (pressureGradient, walls with the condition of WallBoundaryPressure), so that a pressure
 //   that needs no increment moves nothing: the splitting error of the plain projection,

@@ -7,7 +7,7 @@
 // to rounding). A flow a few particles thick lies wholly in that band, and there the
 // distribution is left to the PPE and the collision safeguard: with the difference form of
 // Eq. 11 granularSlope's sand stream paired up to the collision distance, 0.5 dx
-// (tutorials/diagnostics/pairs.py; its README), which is why that case uses the symmetric form
+// (doc/notes/granularSlope.md, tutorials/diagnostics/pairs.py), so that case uses the symmetric form
 // (VelocityCorrection.hpp), whose pairs repel.
 // `shifting { nearSurface pairs; }` (system/isphSchemes; default none) shifts there by the
 // pair term alone, δr = −D Σ_b V_b 0.2 max((W_ab/W(dx))⁴ − 1, 0) ∇_a W_ab over material b:

@@ -11,7 +11,7 @@
 // (system/isphSchemes) uses it: its pairs repel under pressure, which the difference form's
 // do not (a uniform pressure has no gradient). Where shifting cannot act, in a stream a few
 // particles thick, the difference form lets particles pair up to the collision distance and
-// the pairs then read as compression (granularSlope jammed on its slope; its README). The
+// the pairs then read as compression (granularSlope jammed: doc/notes/granularSlope.md). The
 // symmetric form is not exact for a linear pressure: a granular layer at rest on a 20° slope
 // crept 12.9 mm in 2 s with it (granularAtRest, 5 mm spacing; 0.25 dx allowed), so it is not
 // the default.

@@ -22,11 +22,11 @@
 // normal velocity into pressure in proportion to its distance r_n from the wall. A fast thin
 // stream (granularSlope) rattles against its bed; the pressure answers each approach and not
 // each departure (where the material is at p = 0 it may leave freely), so the walls' pressure
-// under it averages several times its weight and the friction brakes the stream (README
-// there). The material's own pressure p_a, which the PPE sets with that condition, still
+// under it averages several times its weight and the friction brakes the stream (doc/notes/
+// granularSlope.md). The material's own pressure p_a, which the PPE sets with that condition, still
 // carries impacts and the lithostatic load. Measured on granularSlope at 12 mm (one run): the
 // stream's bed friction fell from 1.15-2.81 to 0.60-0.74 times its weight normal to the bed,
-// but the deposit came out flatter; no case uses it (the tutorial's README).
+// but the deposit came out flatter; no case uses it (doc/notes/granularSlope.md).
 //
 // Only materials with WallContact::coulombFriction feel it (a fluid sticks instead); a
 // patch without a friction angle is a free-slip wall for them.

@@ -6,7 +6,7 @@
 . "$1/tests/tutorials/TutorialTest.sh"
 project=$1 build=$2
 work=$(mktemp -d /tmp/isphTest-scaling.XXXXXX)
-trap 'rm -rf "$work"' EXIT
+scratch=$work
 cp -r "$project/tutorials/benchmarks/scaling" "$work/"
 export ISPH_PROJECT_DIR=$project ISPH_BUILD_DIR=$build
 if ! "$work/scaling/Allrun" -sizes 10k -threads 1 -steps 3 -cases columnCollapse -repeat 2 > "$work/Allrun.log" 2>&1
@@ -35,4 +35,4 @@ share=$(awk -F, 'NR > 1 { s += $6 } END { print s }' "$work/scaling/phases.csv")
 check "the phase shares add up to 100% (99-101)" "$share >= 99 && $share <= 101"
 check "the PPE solve is among the phases" "$(grep -c ',PPE solve,' "$work/scaling/phases.csv") == 1"
 check "summary.txt written" "$(grep -c 'spread' "$work/scaling/summary.txt") == 1"
-exit $fail
+finish

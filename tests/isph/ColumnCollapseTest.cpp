@@ -14,7 +14,7 @@
 // column settles by 7-8 mm). The corner does not compact: the plain projection's splitting
 // error makes the rods behind the failure surface creep. With the incremental projection in
 // the gradient form (the last test here) the wedge holds, but its top rods at the square's
-// edge still go with the late failure (tutorials/validation/columnCollapse/README.md).
+// edge still go with the late failure (doc/notes/columnCollapse.md).
 // Run them by hand with
 //   build/tests/testIsphValidation --gtest_also_run_disabled_tests --gtest_filter='ColumnCollapse*'
 #include <gtest/gtest.h>
@@ -143,8 +143,8 @@ TEST_F(ColumnCollapse, DISABLED_StaticWedgeAgainstTheWall) {
 // moving less than dx on average (0.9-1.3 mm; 6.8 mm with the default). The toe and area as
 // in the default case. The maximum over the corner rods is not asserted: the top rods at the
 // edge of the 0.02 m square go with the failure that works back from the front (2.7-4.4 mm),
-// as the disabled test above records. Not the case's default: README, "The incremental
-// projection".
+// as the disabled test above records. Not the case's default: doc/notes/columnCollapse.md,
+// "The incremental projection in the gradient form".
 TEST(ColumnCollapseIncrementalGradient, KeepsTheWedgeAgainstTheWall) {
   Deposit d;
   ASSERT_NO_FATAL_FAILURE(runAndMeasure("columnGradient",

@@ -4,7 +4,7 @@
 // from the explicit predictor give the same particles to within what the solvers' tolerance
 // allows (the restart and thread-count tests' bound: a thousandth of a spacing, 1 mm/s),
 // while the increment, which is what it is for, saves velocity iterations in this slow,
-// largely rigid flow (about a fifth over the 2 mm run: velocitySolve/README.md).
+// largely rigid flow (about a fifth over the 2 mm run: doc/notes/velocitySolve.md).
 #include <gtest/gtest.h>
 
 #include <fstream>

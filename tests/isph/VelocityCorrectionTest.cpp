@@ -1,7 +1,7 @@
 // Eq. 11 in its two forms (VelocityCorrection.hpp), 2D, Wendland C2 with h = 1.3 dx, on a
 // 12 × 12 lattice block of material at a uniform 1000 Pa, u* = 0, one interior particle moved
 // to half a spacing from its right-hand neighbour (a pair, as a thin granular stream forms
-// them; tutorials/landslides/granularSlope/README.md):
+// them; doc/notes/granularSlope.md):
 //  - the renormalised difference form L_a Σ V_b (p_b − p_a)∇W sees no gradient in a uniform
 //    pressure, so nothing moves, the pair included;
 //  - the paper's symmetric form Σ m_b (p_a/ρ_a² + p_b/ρ_b²)∇W pushes the pair apart along
