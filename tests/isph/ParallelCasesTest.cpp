@@ -295,9 +295,12 @@ TEST(ParallelCases, DISABLED_NoiseOfTheSerialFiguresUnderATenTimesTighterSolverT
 }
 
 // A run stopped and restarted on 2 ranks from its processor directories (startFrom
-// latestTime) matches the uninterrupted 2-rank run as a serial restart matches its run
-// (RestartTest.cpp: within a thousandth of a spacing and 1e-3 m/s; the restart partitions
-// anew, so the solves differ at their tolerance: measured 1.2e-10 dx and 1.9e-11 m/s).
+// latestTime) matches the uninterrupted 2-rank run to the solvers' tolerance: the restart
+// partitions anew, so its solves (AMG hierarchies, order of the sums) differ from the
+// continuous run's at their tolerance, as a parallel run's differ from the serial run's.
+// Measured: 1.2e-10 dx and 1.9e-11 m/s (the serial dam break's front moves by 1e-13 to
+// 1.4e-11 m under a ten times tighter solver tolerance, above); checked within 1e-9 dx and
+// 1e-10 m/s, about five to eight times that.
 TEST(ParallelCases, RestartOnTwoRanksMatchesTheUninterruptedRun) {
   const double dx = 0.05715 / 10;
   CaseRunner whole("damBreak", "parallelRestartWhole"), split("damBreak", "parallelRestartSplit");
@@ -319,8 +322,8 @@ TEST(ParallelCases, RestartOnTwoRanksMatchesTheUninterruptedRun) {
   ASSERT_EQ(A.size(), B.size());
   const auto [maxDx, maxDu] = isph::test::largestDifference(A, B);
   std::printf("largest difference: position %.3g dx, velocity %.3g m/s\n", maxDx / dx, maxDu);
-  EXPECT_LT(maxDx, 1e-3 * dx);
-  EXPECT_LT(maxDu, 1e-3);
+  EXPECT_LT(maxDx, 1e-9 * dx);
+  EXPECT_LT(maxDu, 1e-10);
 }
 
 // Crash safety in a parallel run (issue 34's, in the processor directories): what interrupted
