@@ -183,6 +183,8 @@ void DistributedParticles::redistribute(ParticleSystem& ps, double supportRadius
   }
   sumOverRanks(std::span<double>(loads));
   double balance = imbalance(loads);
+  // The worst balance is the one the run reached with the kept cuts, before a repartition.
+  worstImbalance_ = std::max(worstImbalance_, balance);
   if (balance > settings_.repartitionFactor) {
     destination = zoltan_->partition(in.points, in.weights, cloud.origId);
     std::fill(loads.begin(), loads.end(), 0.0);
@@ -206,7 +208,6 @@ void DistributedParticles::redistribute(ParticleSystem& ps, double supportRadius
   firstRow_ = GlobalNumbering::of(static_cast<long>(ps.nMaterial)).first;
   ++checks_;
   lastImbalance_ = balance;
-  worstImbalance_ = std::max(worstImbalance_, balance);
   imbalanceSum_ += balance;
 }
 
@@ -299,7 +300,8 @@ void DistributedParticles::buildGhosts(ParticleSystem& ps, const MaterialTable& 
 std::string DistributedParticles::balanceSummary() const {
   const long ghosts = sumOverRanks(ghostSum_);
   return fmt::format(
-      "Partition balance (largest load / mean load): {:.3f} now, {:.3f} at worst, {:.3f} on average over {} checks; "
+      "Partition balance (largest load / mean load): {:.3f} now, {:.3f} at worst (before a repartition), {:.3f} on "
+      "average after {} checks; "
       "{} repartition(s); {:.0f} ghost particles per step over all ranks",
       lastImbalance_, worstImbalance_, checks_ > 0 ? imbalanceSum_ / checks_ : lastImbalance_, checks_, repartitions_,
       steps_ > 0 ? static_cast<double>(ghosts) / static_cast<double>(steps_) : 0.0);
