@@ -284,10 +284,9 @@ std::string IsphSolver::preconditionerSummary() const {
 const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
   if (!materials_->anyDeviatoricStress()) return nullptr;
   if (tauStep_ != stepsTaken_) {
-    // τ = 2 η D at the state after the step (what is written, what toVTK shows and what the
-    // wall force integrates), once per step however many callers ask.
-    // (The time step must not depend on whether a function object or a write asked: the
-    // viscous limit keeps the η of the step itself.)
+    // No step taken yet (the start time): τ = 2 η D of the state read, as the first step's
+    // predictor will see it. (The time step must not depend on whether a write asked: the
+    // viscous limit keeps the η it had.)
     const double maxNu = maxNu_;
     updateRheology();
     maxNu_ = maxNu;
@@ -295,6 +294,23 @@ const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
     tauStep_ = stepsTaken_;
   }
   return &tau_;
+}
+
+void IsphSolver::keepActingStress(const std::vector<Vec3>* ustar) {
+  // The deviatoric stress that entered the step's momentum balance: the viscosity of time n
+  // with the strain rate of the velocity it acted on, u* for the semi-implicit term (Eq. 6
+  // solved for u*), uⁿ for the explicit one. This is what is written and what a wall force
+  // integrates, not a stress re-evaluated from the corrected velocity (which carries the
+  // projection's splitting error as a strain rate that no stress resisted).
+  if (!materials_->anyDeviatoricStress()) return;
+  if (ustar) {
+    StrainRate acting;
+    acting.compute(ps_, *materials_, correction_, schemes_.correctionMinDeterminant, *ustar);
+    tau_ = isph::deviatoricStress(ps_, acting, eta_);
+  } else {
+    tau_ = isph::deviatoricStress(ps_, strain_, eta_);
+  }
+  tauStep_ = stepsTaken_;
 }
 
 void IsphSolver::updateRheology() {
@@ -363,9 +379,12 @@ void IsphSolver::intermediateVelocity(const Time& time, StepReport& report) {
       }
       wallFriction_ = friction_->wallTraction(ps_, force);
     }
+    auto t = timer_.scope("rheology");
+    keepActingStress(&ustar_);  // u* with its ghosts (exchanged above)
     return;
   }
   auto t = timer_.scope("intermediate velocity");
+  keepActingStress(nullptr);
   maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, kernel_->h(), ustar_);
   applyExplicitFriction(dt);
   exchangeGhosts(ps_, ustar_);  // parallel
@@ -504,6 +523,7 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
   {
     auto t = timer_.scope("rheology");
     updateRheology();
+    keepActingStress(nullptr);
   }
   {
     auto t = timer_.scope("forces and density");

@@ -94,8 +94,8 @@ class IsphSolver {
   const ParticleSystem& particles() const { return ps_; }
   const PhaseTimer& timer() const { return timer_; }
   const Kernel& kernel() const { return *kernel_; }
-  // τ = 2 η D of every particle after the last step (zero for walls), or null when no
-  // material has a deviatoric stress. Computed once per step, on first request.
+  // The deviatoric stress τ that acted in the last step (zero for walls; keepActingStress),
+  // or null when no material has one; before the first step, 2 η D of the state read.
   const std::vector<SymmTensor>* deviatoricStress();
   // The traction of the material on each wall particle through the Coulomb wall friction of
   // the last step (WallFriction::wallTraction) [Pa], zero off the friction walls; null when no
@@ -123,6 +123,8 @@ class IsphSolver {
   void applyExplicitFriction(double dt);
   // Strain rate and η of the material particles at the current state (empty η if inviscid).
   void updateRheology();
+  // τ = 2 ηⁿ D(u) of the step into tau_: u = u* (semi-implicit term) or, null, uⁿ (explicit).
+  void keepActingStress(const std::vector<Vec3>* ustar);
   void intermediateVelocity(const Time& time, StepReport& report);
   // The weakly-compressible step (method wcsph) in place of the projection.
   StepReport stepWeaklyCompressible(const Time& time);

@@ -13,6 +13,12 @@ double shearRateMagnitude(const SymmTensor& D) {
 
 void StrainRate::compute(const ParticleSystem& ps, const MaterialTable& materials,
                          const KernelGradientCorrection& correction, double minDeterminant) {
+  compute(ps, materials, correction, minDeterminant, ps.cloud.U);
+}
+
+void StrainRate::compute(const ParticleSystem& ps, const MaterialTable& materials,
+                         const KernelGradientCorrection& correction, double minDeterminant,
+                         const std::vector<Vec3>& u) {
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const std::size_t n = ps.size();
@@ -32,8 +38,8 @@ void StrainRate::compute(const ParticleSystem& ps, const MaterialTable& material
       if (!material && !withWalls) continue;
       const Vec3 xab = c.positions[a] - c.positions[b];
       const Vec3 gradW = nl.F[kk] * xab;
-      const Vec3 ub = material ? c.U[b] : Vec3::Zero();
-      G.noalias() += ps.volume[b] * (ub - c.U[a]) * gradW.transpose();
+      const Vec3 ub = material ? u[b] : Vec3::Zero();
+      G.noalias() += ps.volume[b] * (ub - u[a]) * gradW.transpose();
     }
     // ∂u_i/∂x_j; renormalised over what the sum ran over (walls add their moment for noSlip).
     Eigen::Matrix3d gradU = G;

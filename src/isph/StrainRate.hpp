@@ -24,9 +24,12 @@ struct StrainRate {
   std::vector<SymmTensor> D;        // deviatoric rate of deformation [1/s], xx xy xz yy yz zz
   std::vector<double> shearRate;    // |γ̇| [1/s]
 
-  // For the material particles (entries beyond nMaterial are left zero).
+  // For the material particles (entries beyond nMaterial are left zero), of the velocity
+  // field `u` (size ≥ nMaterial; walls are at rest), by default the particles' own.
   void compute(const ParticleSystem& ps, const MaterialTable& materials, const KernelGradientCorrection& correction,
                double minDeterminant);
+  void compute(const ParticleSystem& ps, const MaterialTable& materials, const KernelGradientCorrection& correction,
+               double minDeterminant, const std::vector<Vec3>& u);
 };
 
 // √(2 D:D) of a symmetric tensor in OpenFOAM order.
