@@ -8,13 +8,17 @@
 //   xMin       0.15;        // optional: the interior along x, away from the end walls [m]
 //   xMax       0.45;
 //   minDepth   0.01;        // optional: the interior is deeper than this [m] (default 0)
+//   phi        30;          // optional: the friction angle [deg], to count the particles at yield
 //   reference  0;           // optional: the time whose cloud the displacement is measured
 //                           // from (default: the first time of the case)
 //
 // (src/postProcessing/sampling/Lithostatic.hpp has the definitions.) Writes
 // postProcessing/sampleLithostatic/<firstTime>/lithostatic.dat: Time [s], the relative L2
-// error of p, the interior spread of (p - p_lith)/(rho |g| H), the largest displacement [m].
+// error of p, the interior spread of (p - p_lith)/(rho |g| H), the largest displacement [m];
+// where the time has tau, what statics fix whatever the layer's K0 (SlopeTraction.hpp): the
+// L2 errors and interior spreads of sigma_nn and sigma_nt, and the share of particles at yield.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -29,7 +33,9 @@
 #include "core/io/AtomicFile.hpp"
 #include "isph/Gravity.hpp"
 #include "particles/CloudIO.hpp"
+#include "postProcessing/forces/WallStress.hpp"
 #include "postProcessing/sampling/Lithostatic.hpp"
+#include "postProcessing/sampling/SlopeTraction.hpp"
 
 namespace {
 
@@ -37,7 +43,8 @@ namespace fs = std::filesystem;
 
 const isph::ApplicationSpec spec{
     .name = "sampleLithostatic",
-    .description = "Error of the pressure of a layer at rest against the lithostatic one, from system/sampleLithostaticDict.",
+    .description = "Error of a layer at rest against statics, from system/sampleLithostaticDict: the pressure against the "
+                   "lithostatic one and, where tau is written, the traction on planes parallel to the bed (sigma_nn, sigma_nt).",
     .options = {{"cloud", "name", "the cloud (default: particles)"}},
     .arguments = {},
     .timeOptions = true,
@@ -58,6 +65,8 @@ void run(const isph::ArgList& args) {
   if (!(s.xMax > s.xMin)) isph::fatalIOError(dict.findEntry("xMax")->location(), "xMax: expected more than xMin");
   s.minDepth = dict.getOrDefault("minDepth", s.minDepth);
   const auto referenceTime = dict.getOptional<double>("reference");
+  const double phi = dict.getOrDefault("phi", 0.0);  // [deg]: counts the particles at yield when given
+  if (!(phi >= 0 && phi < 90)) isph::fatalIOError(dict.findEntry("phi")->location(), "phi: expected an angle in degrees in [0, 90)");
   dict.checkKeywords();
   s.g = isph::readGravity(args.casePath());
 
@@ -82,18 +91,31 @@ void run(const isph::ArgList& args) {
                                  s.g.x(), s.g.y(), s.g.z(), s.normal.x(), s.normal.y(), s.normal.z());
   text += fmt::format("# spread over {} < x < {}, depth > {} m, in units of rho |g| H, H = {} m; displacement from time {}\n",
                       s.xMin, s.xMax, s.minDepth, s.height, referenceName);
-  text += "# Time[s] l2[-] spread[-] maxDisplacement[m]\n";
+  text += "# Time[s] l2[-] spread[-] maxDisplacement[m] l2SigmaNn[-] l2SigmaNt[-] spreadSigmaNn[-] spreadSigmaNt[-] "
+          "atYield[-]\n";
   isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
   for (const auto& time : times) {
+    std::optional<std::vector<isph::SymmTensor>> tau;
     const auto cloud = skipped.read(time, [&] {
-      return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, decomposed).path(), cloudName);
+      const isph::DecomposedTime at(args.casePath(), time.name, decomposed);
+      isph::ParticleCloud c = isph::readCloud(at.path(), cloudName);
+      tau = isph::readDeviatoricStress(at.path(), cloudName, c.size());
+      return c;
     });
     if (!cloud) continue;
     const isph::LithostaticError e = isph::lithostaticError(*cloud, s);
     const double moved = isph::largestDisplacement(start, *cloud);
     isph::info("Time = {}  l2 {:.6g}  spread {:.6g}  maxDisplacement {:.6g} m  ({} interior particles)", time.name, e.l2,
                e.spread, moved, e.interior);
-    text += fmt::format("{} {:.8g} {:.8g} {:.8g}\n", time.value, e.l2, e.spread, moved);
+    text += fmt::format("{} {:.8g} {:.8g} {:.8g}", time.value, e.l2, e.spread, moved);
+    if (tau) {  // statics: the traction on planes parallel to the bed (SlopeTraction.hpp)
+      const isph::SlopeTractionError t = isph::slopeTractionError(*cloud, *tau, s, phi);
+      isph::info("    sigma_nn: l2 {:.6g} spread {:.6g}; sigma_nt: l2 {:.6g} spread {:.6g}; at yield {:.4g}", t.l2Normal,
+                 t.spreadNormal, t.l2Shear, t.spreadShear, t.atYield);
+      text += fmt::format(" {:.8g} {:.8g} {:.8g} {:.8g} {:.8g}", t.l2Normal, t.l2Shear, t.spreadNormal, t.spreadShear,
+                          t.atYield);
+    }
+    text += "\n";
   }
   skipped.finish(times.size());
   const fs::path out = args.casePath() / "postProcessing" / "sampleLithostatic" / times.front().name / "lithostatic.dat";

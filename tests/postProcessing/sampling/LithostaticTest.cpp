@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Error.hpp"
+#include "TwentyDegreeLayer.hpp"
 
 namespace {
 
@@ -14,7 +15,7 @@ using namespace isph;
 // A 60 x 10 layer of sand (rho 1800) on a 0.01 m lattice, x in (0, 0.6), the top centres at
 // y = 0.095, under gravity tilted by 20 degrees, with the exact lithostatic pressure
 // rho |g| cos(20 deg) (0.095 - y); plus a wall particle with a wild pressure (never counted).
-constexpr double rho = 1800, gMag = 9.81, beta = 20 * M_PI / 180, H = 0.1;
+using namespace isph::test;
 
 ParticleCloud layer() {
   ParticleCloud c;
@@ -30,16 +31,7 @@ ParticleCloud layer() {
   return c;
 }
 
-LithostaticSpec spec() {
-  LithostaticSpec s;
-  s.rho = rho;
-  s.g = gMag * Vec3(std::sin(beta), -std::cos(beta), 0);
-  s.xMin = 0.15;
-  s.xMax = 0.45;
-  s.minDepth = 0.015;  // between the rows at depths 0.01 and 0.02
-  s.height = H;
-  return s;
-}
+LithostaticSpec spec() { return twentyDegreeLayerSpec(); }
 
 TEST(LithostaticError, AnExactLithostaticLayerHasNoError) {
   const LithostaticError e = lithostaticError(layer(), spec());
