@@ -143,6 +143,22 @@ WallLayerResult generateWallLayers(const std::vector<WallSurface>& walls, int la
       }
     }
   }
+  // A dummy beyond (layers + 1/2) dx of every wall particle is dropped (under a demoted
+  // stretch of surface: the middle of a wide barrier's foot).
+  const double reach = (layers + 0.5) * dx;
+  SpatialHash wallParticles(reach);
+  for (const WallParticle& p : accepted)
+    if (p.isWall) wallParticles.insert(p.position);
+  std::erase_if(accepted, [&](const WallParticle& p) {
+    const bool unreachable = !p.isWall && !wallParticles.anyCloserThan(p.position, reach);
+    if (unreachable) {
+      WallLayerStats& stats = result.stats[static_cast<std::size_t>(p.wall)];
+      --stats.dummyParticles;
+      if (p.layer == 0) --stats.demoted;
+      ++stats.dropped;
+    }
+    return unreachable;
+  });
   std::stable_sort(accepted.begin(), accepted.end(),
                    [](const WallParticle& a, const WallParticle& b) { return a.wall < b.wall; });
   result.particles = std::move(accepted);

@@ -23,6 +23,10 @@
 //  - lies closer than dx/2 to a particle already kept (no duplicates where walls meet);
 // and a wall particle whose normal points into another wall's solid (probe dx/2 along it)
 // becomes a dummy (the bed under a barrier is not a surface the material can touch).
+// Last, a dummy with no wall particle within (layers + 1/2) dx is dropped: under the middle of
+// a barrier's foot wider than twice the layers, it is out of every material particle's
+// support (which reaches layers·dx at most, dx/2 past a wall particle on the surface it
+// crosses), and a dummy takes its pressure from a wall particle near it.
 #include <vector>
 
 #include "particleGeneration/WallSurface.hpp"
@@ -40,7 +44,8 @@ struct WallParticle {
 struct WallLayerStats {
   long wallParticles = 0, dummyParticles = 0;
   long demoted = 0;  // surface particles covered by another wall (kept as dummies)
-  long dropped = 0;  // candidates dropped as duplicates or inside another wall's layers
+  long dropped = 0;  // candidates dropped as duplicates, inside another wall's layers, or
+                     // demoted beyond the reach of every wall particle
   double surfaceLength = 0;
   double minSpacing = 0, maxSpacing = 0;  // of the wall particles along the surface
 };

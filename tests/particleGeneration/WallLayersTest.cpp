@@ -238,5 +238,43 @@ TEST(Walls, BarrierStandingOnABedCoversTheContact) {
   EXPECT_GT(r.walls[0].stats.demoted, 0);
 }
 
+// A barrier foot ten spacings wide (the flagship's 20 mm barrier at 1.8 mm): the bed's
+// particles under its middle are further than the layers from every wall particle, out of
+// every material particle's support, and the solver could not give them a wall to take their
+// pressure from; they are dropped, and every dummy kept has a wall particle within
+// (layers + 1/2) dx.
+TEST(Walls, AWideBarrierFootKeepsNoDummyOutOfReachOfTheWallParticles) {
+  const double dx = 0.01;
+  Scene s = test::emptyScene(dx);
+  addRegion(s, "sand", std::make_unique<Box>(Vec2(0, 0), Vec2(0.5, 0.2)));
+  addWall(s, "bed", {{0, 0.3}, {0, 0}, {2, 0}});
+  addWall(s, "barrier", {{1.0, 0}, {1.1, 0}, {1.1, 0.3}, {1.0, 0.3}}, true);
+  const GenerationResult r = generateParticles(s);
+  const ParticleCloud& c = r.cloud;
+  const auto wall = static_cast<label>(ParticleKind::wall), dummy = static_cast<label>(ParticleKind::dummy);
+  const double reach = (s.wallLayers + 0.5) * dx;
+  long dummies = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c.kind[i] != dummy) continue;
+    ++dummies;
+    double nearest = 1e9;
+    for (std::size_t j = 0; j < c.size(); ++j)
+      if (c.kind[j] == wall) nearest = std::min(nearest, (c.positions[j] - c.positions[i]).norm());
+    EXPECT_LT(nearest, reach) << "dummy at " << c.positions[i].transpose();
+  }
+  EXPECT_GT(dummies, 0);
+  // Under the middle of the foot (1.04 < x < 1.06) nothing is left; near its faces the
+  // bed's layers are kept.
+  long middle = 0, nearFaces = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const Vec3& x = c.positions[i];
+    if (c.kind[i] == dummy && x.y() <= 1e-9 && x.x() > 1.04 && x.x() < 1.06) ++middle;
+    if (c.kind[i] == dummy && x.y() <= 1e-9 && x.x() > 1.0 && x.x() < 1.02) ++nearFaces;
+  }
+  EXPECT_EQ(middle, 0);
+  EXPECT_GT(nearFaces, 0);
+  EXPECT_GT(r.walls[0].stats.dropped, 0);
+}
+
 }  // namespace
 }  // namespace isph
