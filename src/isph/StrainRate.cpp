@@ -7,8 +7,7 @@
 namespace isph {
 
 double shearRateMagnitude(const SymmTensor& D) {
-  const double dd = D[0] * D[0] + D[3] * D[3] + D[5] * D[5] + 2.0 * (D[1] * D[1] + D[2] * D[2] + D[4] * D[4]);
-  return std::sqrt(2.0 * dd);
+  return std::sqrt(2.0 * doubleDotSymm(D));
 }
 
 void StrainRate::compute(const ParticleSystem& ps, const MaterialTable& materials,

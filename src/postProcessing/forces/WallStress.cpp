@@ -7,12 +7,6 @@
 
 namespace isph {
 
-Vec3 dotSymm(const SymmTensor& t, const Vec3& n) {
-  return Vec3(t[0] * n.x() + t[1] * n.y() + t[2] * n.z(),  //
-              t[1] * n.x() + t[3] * n.y() + t[4] * n.z(),  //
-              t[2] * n.x() + t[4] * n.y() + t[5] * n.z());
-}
-
 std::optional<std::vector<SymmTensor>> readDeviatoricStress(const std::filesystem::path& timeDir,
                                                             const std::string& cloudName, std::size_t n) {
   const auto file = timeDir / "lagrangian" / cloudName / "tau";

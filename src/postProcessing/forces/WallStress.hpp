@@ -33,7 +33,4 @@ std::optional<std::vector<SymmTensor>> readDeviatoricStress(const std::filesyste
 std::optional<std::vector<Vec3>> readWallFriction(const std::filesystem::path& timeDir, const std::string& cloudName,
                                                   std::size_t n);
 
-// τ·n for a symmetric tensor in OpenFOAM's component order (xx xy xz yy yz zz).
-Vec3 dotSymm(const SymmTensor& t, const Vec3& n);
-
 }  // namespace isph

@@ -10,16 +10,6 @@
 
 namespace isph {
 
-namespace {
-
-Vec3 times(const SymmTensor& t, const Vec3& n) {
-  return Vec3(t[0] * n.x() + t[1] * n.y() + t[2] * n.z(),  //
-              t[1] * n.x() + t[3] * n.y() + t[4] * n.z(),  //
-              t[2] * n.x() + t[4] * n.y() + t[5] * n.z());
-}
-
-}  // namespace
-
 SlopeTractionError slopeTractionError(const ParticleCloud& cloud, const std::vector<SymmTensor>& tau,
                                       const LithostaticSpec& spec, double phi) {
   if (tau.size() != cloud.size()) {
@@ -43,7 +33,7 @@ SlopeTractionError slopeTractionError(const ParticleCloud& cloud, const std::vec
     if (cloud.kind[i] != material) continue;
     ++count;
     const double depth = surface - cloud.positions[i].dot(n);
-    const Vec3 traction = times(tau[i], n) - cloud.p[i] * n;  // σ·n
+    const Vec3 traction = dotSymm(tau[i], n) - cloud.p[i] * n;  // σ·n
     const Vec3 exact = spec.rho * depth * spec.g;
     const double errN = -(traction - exact).dot(n);            // σ_nn − ρ|g|cos β d
     const Vec3 errT = (traction - exact) - (traction - exact).dot(n) * n;
@@ -61,9 +51,7 @@ SlopeTractionError slopeTractionError(const ParticleCloud& cloud, const std::vec
       ++e.interior;
     }
     if (phi > 0) {
-      const SymmTensor& t = tau[i];
-      const double norm =
-          std::sqrt(0.5 * (t[0] * t[0] + t[3] * t[3] + t[5] * t[5]) + t[1] * t[1] + t[2] * t[2] + t[4] * t[4]);
+      const double norm = std::sqrt(0.5 * doubleDotSymm(tau[i]));  // |τ| = √(τ:τ/2)
       const double strength = sinPhi * (std::max(cloud.p[i], 0.0) + 0.5 * spec.rho * spec.g.norm() * dx);
       yielded += norm >= 0.99 * strength;
     }
