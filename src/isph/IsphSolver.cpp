@@ -24,6 +24,7 @@
 #include "isph/ParticleShifting.hpp"
 #include "isph/VelocityCorrection.hpp"
 #include "isph/WallPenetrationGuard.hpp"
+#include "isph/materials/DruckerPragerElasticPlastic.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 #include "isph/parallel/StepStateOverRanks.hpp"
 #include "parallel/Reduce.hpp"
@@ -58,6 +59,27 @@ std::string findCloud(const std::filesystem::path& timeDir) {
   return clouds[0];
 }
 
+// The largest sound speed √(K/ρ) and P-wave speed of the elasticPlastic materials (0: none).
+// FatalError if such a material is not alone in the scene or runs with the projection method.
+std::pair<double, double> elasticPlasticSpeeds(const MaterialTable& materials, Method method) {
+  double sound = 0, wave = 0;
+  std::size_t elastic = 0;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (!materials[i].integratesStress()) continue;
+    ++elastic;
+    const auto& m = static_cast<const DruckerPragerElasticPlastic&>(materials[i]);
+    sound = std::max(sound, m.bulkSpeed());
+    wave = std::max(wave, m.waveSpeed());
+  }
+  if (elastic > 0 && (method != Method::wcsph || elastic != materials.size())) {
+    fatalError(fmt::format("constant/materialProperties: model elasticPlastic runs with `method wcsph;` in "
+                           "system/isphSchemes and with no other model in the scene; found {} of {} materials "
+                           "elasticPlastic{}",
+                           elastic, materials.size(), method != Method::wcsph ? " and the projection method" : ""));
+  }
+  return {sound, wave};
+}
+
 }  // namespace
 
 IsphSolver::IsphSolver(const Time& time, bool parallel) {
@@ -77,6 +99,7 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
   // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
   // reordered below.
   std::unordered_map<label, double> writtenDensity;
+  const std::vector<label> writtenIds = ps_.cloud.origId;  // the order of the fields read
   if (const auto file = time.startPath() / "lagrangian" / cloudName / "rho"; std::filesystem::is_regular_file(file)) {
     const auto rho = readField<scalar>(file, ps_.cloud.size());
     for (std::size_t i = 0; i < rho.size(); ++i) writtenDensity[ps_.cloud.origId[i]] = rho[i];
@@ -126,8 +149,11 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
                                      [](double v) { return v == 0.0; }));  // parallel: all ranks
   if (state) freshStart_ = false;
   initialiseWallPressure();
+  const auto [elasticSound, elasticWave] = elasticPlasticSpeeds(*materials_, schemes_.method);
+  waveSpeed_ = elasticWave;
   if (schemes_.method == Method::wcsph) {
     if (schemes_.soundSpeed <= 0 && state && state->soundSpeed > 0) schemes_.soundSpeed = state->soundSpeed;
+    if (schemes_.soundSpeed <= 0 && elasticSound > 0) schemes_.soundSpeed = elasticSound;  // p = K (ρ − ρ0)/ρ0
     if (schemes_.soundSpeed <= 0) schemes_.soundSpeed = defaultSoundSpeed(ps_, g_);
     if (!(schemes_.soundSpeed > 0)) {
       fatalError("method wcsph: a scene at rest without gravity has no speed scale for the default sound speed; "
@@ -147,6 +173,21 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
       info("    densities of the weakly-compressible state read from {}", time.timeName());
     } else {
       wcsph_->initialiseDensity(ps_);
+    }
+    if (elasticWave > 0) {  // elasticPlastic: s is the state, written as tau (ElasticPlasticStress.hpp)
+      elastic_ = std::make_unique<ElasticPlasticStress>();
+      const auto file = time.startPath() / "lagrangian" / cloudName / "tau";
+      if (std::filesystem::is_regular_file(file)) {
+        const auto written = readField<SymmTensor>(file, ps_.cloud.size());
+        std::unordered_map<label, SymmTensor> byId;
+        for (std::size_t i = 0; i < written.size(); ++i) byId[writtenIds[i]] = written[i];
+        std::vector<SymmTensor> tau(ps_.size());
+        for (std::size_t i = 0; i < ps_.size(); ++i) tau[i] = byId.at(ps_.cloud.origId[i]);
+        elastic_->initialise(ps_, &tau);
+        info("    deviatoric stresses of the elastic-plastic state read from {}", time.timeName());
+      } else {
+        elastic_->initialise(ps_, nullptr);
+      }
     }
   }
 
@@ -283,6 +324,10 @@ std::string IsphSolver::preconditionerSummary() const {
 
 const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
   if (!materials_->anyDeviatoricStress()) return nullptr;
+  if (elastic_ && tauStep_ != stepsTaken_) {  // the start time: the state read
+    tau_ = elastic_->deviatoric();
+    tauStep_ = stepsTaken_;
+  }
   if (tauStep_ != stepsTaken_) {
     // No step taken yet (the start time): τ = 2 η D of the state read, as the first step's
     // predictor will see it. (The time step must not depend on whether a write asked: the
@@ -420,7 +465,7 @@ TimeStepLimits IsphSolver::nextDeltaT(const Time& time) const {
   }
   double force = g_.norm() + maxViscousAcceleration_;
   if (wcsph_) {  // the acoustic Courant limit, and the force limit from the whole acceleration
-    maxSpeed += wcsph_->soundSpeed();
+    maxSpeed += waveSpeed_ > 0 ? waveSpeed_ : wcsph_->soundSpeed();  // elasticPlastic: the P wave
     force = std::max(force, maxAcceleration_);
   }
   const double previous = time.timeIndex() > 0 ? time.deltaT() : 0.0;
@@ -508,7 +553,9 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
   {
     auto t = timer_.scope("neighbour search");
     if (stepsSinceReorder_++ % reorderInterval == 0) {
-      wcsph_->permute(reorderMaterialParticles(ps_, kernel_->supportRadius()));
+      const std::vector<int> order = reorderMaterialParticles(ps_, kernel_->supportRadius());
+      wcsph_->permute(order);
+      if (elastic_) elastic_->permute(order);
     }
     ps_.neighbours.build(ps_.cloud.positions, *kernel_);
   }
@@ -522,8 +569,14 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
   }
   {
     auto t = timer_.scope("rheology");
-    updateRheology();
-    keepActingStress(nullptr);
+    if (elastic_) {  // s^{n+1} from uⁿ, then the momentum with it: symplectic in (s, u)
+      elastic_->update(ps_, *materials_, dt);
+      tau_ = elastic_->deviatoric();
+      tauStep_ = stepsTaken_;
+    } else {
+      updateRheology();
+      keepActingStress(nullptr);
+    }
   }
   {
     auto t = timer_.scope("forces and density");
@@ -533,13 +586,21 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
       updateWallPressure(ps_, atRest, g_, dt);
     }
     const std::vector<double> rate = wcsph_->densityRate(ps_, *kernel_, g_, h);
-    // g and the explicit deviatoric term (Eq. 6 as written), then pressure and artificial viscosity.
-    maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, h, ustar_);
+    // g and the explicit deviatoric term (Eq. 6 as written; elasticPlastic: its stress, below),
+    // then pressure and artificial viscosity.
+    if (elastic_) {
+      ustar_.assign(ps_.size(), Vec3::Zero());
+      for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustar_[a] = ps_.cloud.U[a] + dt * g_;
+      maxViscousAcceleration_ = 0;
+    } else {
+      maxViscousAcceleration_ = IntermediateVelocity::compute(ps_, *materials_, eta_, g_, dt, h, ustar_);
+    }
     const long n = static_cast<long>(ps_.nMaterial);
 #pragma omp parallel for schedule(static)
     for (long ia = 0; ia < n; ++ia) {
       const auto a = static_cast<std::size_t>(ia);
       ustar_[a] += dt * (wcsph_->pressureForce(ps_, *kernel_, a) + wcsph_->artificialViscosity(ps_, h, a));
+      if (elastic_) ustar_[a] += dt * wcsph_->deviatoricForce(ps_, *kernel_, elastic_->deviatoric(), a);
     }
     // Coulomb friction, limited by the wall pressures (as the explicit projection step does).
     friction_->update(ps_);

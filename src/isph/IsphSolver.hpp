@@ -34,6 +34,7 @@
 
 #include "core/PhaseTimer.hpp"
 #include "core/time/Time.hpp"
+#include "isph/ElasticPlasticStress.hpp"
 #include "isph/FreeSurfaceDetector.hpp"
 #include "isph/ImplicitViscousStep.hpp"
 #include "isph/StepState.hpp"
@@ -155,6 +156,8 @@ class IsphSolver {
   std::vector<Vec3> wallFriction_;  // per particle: the walls' friction traction [Pa]
   std::unique_ptr<ImplicitViscousStep> viscous_;
   std::unique_ptr<WeaklyCompressibleStep> wcsph_;  // method wcsph (null: the projection)
+  std::unique_ptr<ElasticPlasticStress> elastic_;  // wcsph with elasticPlastic materials (null: viscous)
+  double waveSpeed_ = 0;  // elasticPlastic: the P-wave speed, the acoustic Courant limit's
   double maxAcceleration_ = 0;  // wcsph: the largest |du/dt| of the last step (force limit)
   std::vector<scalar> pStart_;  // p at the step start (restored when the PPE fails)
   Vec3 domainMin_, domainMax_;

@@ -102,6 +102,28 @@ Vec3 WeaklyCompressibleStep::pressureForce(const ParticleSystem& ps, const Kerne
   return sum;
 }
 
+Vec3 WeaklyCompressibleStep::deviatoricForce(const ParticleSystem& ps, const Kernel& kernel,
+                                             const std::vector<SymmTensor>& s, std::size_t a) const {
+  const auto& nl = ps.neighbours;
+  const double ra2 = density_[a] * density_[a];
+  Vec3 sum = Vec3::Zero();
+  for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    const auto b = static_cast<std::size_t>(nl.index[kk]);
+    const double mb = ps.rho[b] * ps.volume[b];
+    const double rb2 = density_[b] * density_[b];
+    const PairGeometry pair = pairGeometry(ps, kernel, a, b, kk);
+    const Vec3 gradW = pair.F * pair.x;
+    if (ps.isMaterial(b)) {
+      sum += mb * (dotSymm(s[a], gradW) / ra2 + dotSymm(s[b], gradW) / rb2);
+    } else {
+      const Vec3& n = wallNormal(ps, b);
+      sum += mb * (1.0 / ra2 + 1.0 / rb2) * dotSymm(s[a], gradW).dot(n) * n;
+    }
+  }
+  return sum;
+}
+
 Vec3 WeaklyCompressibleStep::artificialViscosity(const ParticleSystem& ps, double h, std::size_t a) const {
   if (alpha_ <= 0) return Vec3::Zero();
   const auto& c = ps.cloud;

@@ -68,6 +68,12 @@ class WeaklyCompressibleStep {
   std::vector<double> densityRate(const ParticleSystem& ps, const Kernel& kernel, const Vec3& g, double h) const;
   // −∇p/ρ of material particle a in the symmetric form, walls and dummies included.
   Vec3 pressureForce(const ParticleSystem& ps, const Kernel& kernel, std::size_t a) const;
+  // (1/ρ_a) ∇·s of material particle a for elastic-plastic materials (ElasticPlasticStress), in
+  // the symmetric form Σ_b m_b (s_a/ρ_a² + s_b/ρ_b²)·∇_a W_ab over material pairs; a wall or dummy
+  // b mirrors the material's deviatoric traction (s_b = s_a) along the wall normal only: the
+  // walls take the normal stress, the tangential traction is the Coulomb friction's.
+  Vec3 deviatoricForce(const ParticleSystem& ps, const Kernel& kernel, const std::vector<SymmTensor>& s,
+                       std::size_t a) const;
   // The artificial-viscosity acceleration of material particle a.
   Vec3 artificialViscosity(const ParticleSystem& ps, double h, std::size_t a) const;
   void advanceDensity(const std::vector<double>& rate, double dt);

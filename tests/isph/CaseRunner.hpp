@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -82,6 +83,20 @@ class CaseRunner {
   }
 
   // Appends `text` to a case file (e.g. an entry at the end of a dictionary).
+  // A tutorial's variant (`./Allrun -<suffix>`): every system/X.<suffix> and constant/X.<suffix>
+  // of the copy replaces X.
+  void useVariant(const std::string& suffix) {
+    for (const char* folder : {"system", "constant"}) {
+      for (const auto& e : std::filesystem::directory_iterator(dir_ / folder)) {
+        const auto name = e.path().filename().string();
+        const std::string ending = "." + suffix;
+        if (name.size() > ending.size() && name.ends_with(ending)) {
+          std::filesystem::rename(e.path(), dir_ / folder / name.substr(0, name.size() - ending.size()));
+        }
+      }
+    }
+  }
+
   void append(const std::string& file, const std::string& text) {
     ASSERT_TRUE(std::filesystem::exists(dir_ / file)) << file << " not found";
     std::ofstream(dir_ / file, std::ios::app) << "\n" << text << "\n";
@@ -124,14 +139,18 @@ class CaseRunner {
 };
 
 // The largest distance any material particle has moved between two clouds of a case.
-inline double largestMaterialDisplacement(const ParticleCloud& start, const ParticleCloud& end) {
+// (Of the particles whose start position satisfies `from`, if given.)
+inline double largestMaterialDisplacement(const ParticleCloud& start, const ParticleCloud& end,
+                                          const std::function<bool(const Vec3&)>& from = {}) {
   std::map<label, Vec3> initial;
   for (std::size_t i = 0; i < start.size(); ++i) {
     if (start.kind[i] == 0) initial[start.origId[i]] = start.positions[i];
   }
   double largest = 0;
   for (std::size_t i = 0; i < end.size(); ++i) {
-    if (end.kind[i] == 0) largest = std::max(largest, (end.positions[i] - initial.at(end.origId[i])).norm());
+    if (end.kind[i] != 0) continue;
+    const Vec3& x0 = initial.at(end.origId[i]);
+    if (!from || from(x0)) largest = std::max(largest, (end.positions[i] - x0).norm());
   }
   return largest;
 }

@@ -91,11 +91,13 @@ struct RestartCase {
   std::vector<std::pair<std::string, std::string>> control;  // controlDict edits
   std::string schemes;                                       // appended to isphSchemes
   std::string middle, end;
+  std::string variant = "";  // the tutorial's variant (CaseRunner::useVariant), if any
 };
 
 void checkRestart(const std::string& name, const RestartCase& rc) {
   CaseRunner whole(rc.tutorial, name + "Whole"), split(rc.tutorial, name + "Split");
   for (CaseRunner* c : {&whole, &split}) {
+    if (!rc.variant.empty()) c->useVariant(rc.variant);
     for (const auto& [k, v] : rc.mesh) c->set("system/particleMeshDict", k, v);
     for (const auto& [k, v] : rc.control) c->set("system/controlDict", k, v);
     if (!rc.schemes.empty()) c->append("system/isphSchemes", rc.schemes);
@@ -135,6 +137,18 @@ TEST(Restart, GranularLayerAtRestRestartsBitForBit) {
                                  "",
                                  "0.2",
                                  "0.3"});
+}
+
+// Bui et al.'s elastic-plastic model in WCSPH (the column's `-elasticPlastic` variant): its
+// state is the deviatoric stress, written as tau, beside the densities.
+TEST(Restart, ElasticPlasticColumnRestartsBitForBit) {
+  checkRestart("restartElasticPlastic", {"columnCollapse",
+                                         {{"spacing", "0.01"}},
+                                         {{"writeInterval", "0.05"}, {"writeFormat", "binary"}},
+                                         "",
+                                         "0.1",
+                                         "0.15",
+                                         "elasticPlastic"});
 }
 
 // The flagship at its -test spacing, through the impact on the barrier (binary, so that the

@@ -39,6 +39,9 @@ class MaterialModel {
   // Upper bound of viscosity() (for the explicit viscous time-step limit).
   virtual double maxViscosity() const = 0;
   virtual WallContact wallContact() const { return WallContact::noSlip; }
+  // True for a model that integrates its stress in time (elasticPlastic, ElasticPlasticStress)
+  // instead of deriving it from a viscosity: viscosity() is then unused.
+  virtual bool integratesStress() const { return false; }
   // Called once the particles are known, before describe(): models whose defaults
   // depend on the scene set them here.
   virtual void adaptToScene(const SceneScales&) {}
