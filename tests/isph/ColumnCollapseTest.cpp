@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -42,17 +43,19 @@ struct Deposit {
   int cornerRods = 0;
 };
 
-// Runs the case at dx to 0.8 s (with `schemes` appended to system/isphSchemes) and measures
-// its deposit against the experiment.
-void runAndMeasure(const std::string& name, const std::string& schemes, Deposit& d) {
+// Runs the case at `spacing` to 0.8 s (with `schemes` appended to system/isphSchemes, and
+// `edit` applied to the copy) and measures its deposit against the experiment.
+void runAndMeasure(const std::string& name, const std::string& schemes, Deposit& d, double spacing = dx,
+                   const std::function<void(CaseRunner&)>& edit = {}) {
   const auto measured = readProfileCsv(std::string(ISPH_TUTORIALS) +
                                        "/columnCollapse/validation/granular_collapse_bui2008_final_surface.csv");
   ASSERT_GE(measured.size(), 10u);
   CaseRunner c("columnCollapse", name);
-  c.set("system/particleMeshDict", "spacing", std::to_string(dx));
+  c.set("system/particleMeshDict", "spacing", std::to_string(spacing));
   c.set("system/controlDict", "endTime", "0.8");
   c.set("system/controlDict", "writeInterval", "0.8");
   if (!schemes.empty()) c.append("system/isphSchemes", schemes);
+  if (edit) edit(c);
   ASSERT_NO_FATAL_FAILURE(c.meshAndSolve());
   d.crossings = c.logValue("isphLandslideFoam", "Wall crossings in the run:");
 
@@ -65,7 +68,7 @@ void runAndMeasure(const std::string& name, const std::string& schemes, Deposit&
   d.runOut = *front;
 
   SurfaceSpec bins;
-  bins.binWidth = dx;
+  bins.binWidth = spacing;
   bins.xMin = 0;
   bins.xMax = 0.6;
   const SurfaceProfile surface = surfaceProfile(end, bins);
@@ -94,7 +97,7 @@ void runAndMeasure(const std::string& name, const std::string& schemes, Deposit&
               "area %.5f m^2 (column %.5f), corner rods (%d) moved %.2f mm on average and %.2f mm at most (dx "
               "%.1f mm), peak speed at 0.8 s %.3g m/s\n",
               d.runOut, measuredRunOut, 100 * (d.runOut / measuredRunOut - 1), 1e3 * d.rms, d.wallHeight, d.area,
-              L * H, d.cornerRods, 1e3 * d.cornerMeanMove, 1e3 * d.cornerMove, 1e3 * dx, d.maxSpeed);
+              L * H, d.cornerRods, 1e3 * d.cornerMeanMove, 1e3 * d.cornerMove, 1e3 * spacing, d.maxSpeed);
   for (const auto& p : measured) {
     std::printf("  x %.4f  measured %.4f  computed %.4f\n", p.x, p.height, surface.heightAt(p.x));
   }
@@ -157,6 +160,30 @@ TEST(ColumnCollapseIncrementalGradient, KeepsTheWedgeAgainstTheWall) {
   EXPECT_NEAR(d.wallHeight / H, 1.0, 0.02) << "the top of the wedge against the wall";
   ASSERT_GT(d.cornerRods, 0);
   EXPECT_LT(d.cornerMeanMove, dx) << "mean motion of the rods near the top-left corner";
+}
+
+// The baseline that users of weakly-compressible SPH would pick (`./Allrun -elasticPlastic` of
+// the tutorial): Bui et al.'s (2008) elastic-plastic Drucker-Prager model with their parameters
+// (E 0.84 MPa, nu 0.3) in explicit WCSPH, at 2.5 mm (about 190 s on one thread). Measured here
+// (maxCo 0.2): toe -6.8 %, RMS 2.24 mm, 0.0995 m at the wall, area 1.018, the 64 corner rods
+// 0.30 mm on average; the tutorial's runs perturbed by their write interval and maxCo (0.2,
+// 0.19, 0.18): toe -9.1, -10.6, -8.5 %, RMS 2.97, 2.44, 2.18 mm, 0.0995 m, corner 0.36, 0.30,
+// 0.32 mm. The checks leave that spread a margin: toe within 15 %, RMS below 4 mm, the wedge's
+// top within 2 % of 0.1 m and its corner rods within dx/4 on average (the static wedge that
+// the projection method does not keep: the disabled test above), area within 3 %. At 2 mm the
+// tutorial gives toe -2.3 %, RMS 2.91 mm, 0.0995 m at the wall, as SPHinXsys does with this
+// model and these parameters (toe -0.9 %, RMS 2.86 mm, 0.0995 m: doc/notes/elasticPlastic.md).
+TEST(ColumnCollapseElasticPlastic, FollowsBuiEtAl2008WithAStaticWedge) {
+  Deposit d;
+  ASSERT_NO_FATAL_FAILURE(
+      runAndMeasure("columnElasticPlastic", "", d, dx, [](CaseRunner& c) { c.useVariant("elasticPlastic"); }));
+  EXPECT_EQ(d.crossings, "0");
+  EXPECT_NEAR(d.runOut / measuredRunOut, 1.0, 0.15) << "final toe against the experiment";
+  EXPECT_NEAR(d.wallHeight / H, 1.0, 0.02) << "the top of the wedge against the wall";
+  EXPECT_LT(d.rms, 0.004) << "RMS distance of the final surface to the measured one";
+  EXPECT_NEAR(d.area / (L * H), 1.0, 0.03) << "area under the final surface";
+  ASSERT_GT(d.cornerRods, 0);
+  EXPECT_LT(d.cornerMeanMove, 0.25 * dx) << "mean motion of the rods near the top-left corner";
 }
 
 }  // namespace
