@@ -205,6 +205,7 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
   info("\nActive models and schemes");
   const std::size_t nMaterial = sumOverRanks(ps_.ownMaterial()), nWall = sumOverRanks(ps_.ownWall()),
                     nDummy = sumOverRanks(ps_.ownDummy());  // parallel: all ranks'
+  nMaterialAll_ = nMaterial;
   info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", dim, nMaterial + nWall + nDummy,
        nMaterial, nWall, nDummy, ps_.dx, kernel_->h());
   for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
@@ -443,6 +444,15 @@ void IsphSolver::applyExplicitFriction(double dt) {
   wallFriction_ = friction_->wallTraction(ps_, applied);
 }
 
+std::string IsphSolver::safeguardSummary() const {
+  const auto per10k = [&](std::size_t n) {
+    return materialParticleSteps_ > 0 ? 1e4 * static_cast<double>(n) / materialParticleSteps_ : 0.0;
+  };
+  return fmt::format("Wall safeguard in the run: {} particle-steps ({:.3g} per 10,000 material particle-steps)\n"
+                     "Collision separation in the run: {} particle-steps ({:.3g} per 10,000 material particle-steps)",
+                     totalSafeguard_, per10k(totalSafeguard_), totalCollisions_, per10k(totalCollisions_));
+}
+
 const std::vector<Vec3>* IsphSolver::wallFriction() const {
   return friction_->active() ? &wallFriction_ : nullptr;
 }
@@ -646,6 +656,9 @@ void IsphSolver::finishStep(const Time& time, StepReport& report) {
                         guard.firstCrossing, guard.crossed));
   }
   totalWallCrossings_ += guard.crossed;
+  totalSafeguard_ += guard.moved;
+  totalCollisions_ += report.collisions;
+  materialParticleSteps_ += static_cast<double>(nMaterialAll_);
   for (std::size_t a = 0; a < ps_.ownMaterial(); ++a) report.maxSpeed = std::max(report.maxSpeed, ps_.cloud.U[a].norm());
   report.maxSpeed = maxOverRanks(report.maxSpeed);  // parallel: all ranks
   report.courant = report.maxSpeed * dt / kernel_->h();

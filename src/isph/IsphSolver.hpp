@@ -104,6 +104,10 @@ class IsphSolver {
   const std::vector<Vec3>* wallFriction() const;
   // Material particles found behind a wall surface since the start of the run.
   std::size_t wallCrossings() const { return totalWallCrossings_; }
+  // The safeguards' work in this run, for the end-of-run summary: the particles the wall
+  // penetration guard put back and those the collision separation moved, summed over the
+  // steps, and per 10,000 material particle-steps.
+  std::string safeguardSummary() const;
   // "AMG hierarchies built for p: N of M solves" (and for U), for the end of the log.
   std::string preconditionerSummary() const;
   const Vec3& gravity() const { return g_; }
@@ -133,6 +137,9 @@ class IsphSolver {
   void finishStep(const Time& time, StepReport& report);
 
   std::size_t totalWallCrossings_ = 0;
+  std::size_t totalSafeguard_ = 0, totalCollisions_ = 0;  // particle-steps (all ranks)
+  double materialParticleSteps_ = 0;                       // Σ over the steps of the material particles
+  std::size_t nMaterialAll_ = 0;                           // material particles on all ranks
   IsphSchemes schemes_;
   std::unique_ptr<MaterialTable> materials_;
   std::unique_ptr<Kernel> kernel_;

@@ -292,6 +292,30 @@ echo "== isTest/notTest"
 check "isTest finds -test" isTest a -test b
 check "notTest without -test" notTest a b
 
+echo "== safeguardFigures"
+printf '%s\n' 'Wall crossings in the run: 2' \
+    'Wall safeguard in the run: 291545 particle-steps (923 per 10,000 material particle-steps)' \
+    'Collision separation in the run: 12 particle-steps (0.0381 per 10,000 material particle-steps)' > log.summary
+got=$(safeguardFigures log.summary case1_ | tr '\n' ';')
+check "safeguardFigures: the three figures with their prefix [got '$got']" \
+    test "$got" = "case1_wallCrossings 2 -;case1_wallSafeguardPer10k 923 -;case1_collisionsPer10k 0.0381 -;"
+rm -f log.summary
+
+echo "== runVariant"
+mkdir -p variantCase/system variantCase/constant
+echo base > variantCase/system/isphSchemes
+echo other > variantCase/system/isphSchemes.soft
+echo soil > variantCase/constant/materialProperties.soft
+check "runVariant without its option does nothing" \
+    test "$(cd variantCase && runVariant soft a -test && pwd)" = "$(cd variantCase && pwd)" -a ! -e variantCase/soft
+got=$(cd variantCase && runVariant soft -soft > /dev/null && pwd)
+check "runVariant -soft goes on in soft/ [got '$got']" test "$got" = "$(cd variantCase && pwd)/soft"
+check "runVariant: X.soft replaces X in the copy" \
+    test "$(cat variantCase/soft/system/isphSchemes)" = other -a "$(cat variantCase/soft/constant/materialProperties)" = soil
+check "runVariant leaves the case itself alone" \
+    test "$(cat variantCase/system/isphSchemes)" = base -a -e variantCase/system/isphSchemes.soft
+rm -rf variantCase
+
 echo "== cleanCase"
 mkdir -p 0.1 1 2e-05 100 0.orig postProcessing/probes VTK 0/uniform processor0/0.1 processor1
 touch log.extra plot.png results.txt Allrun 0/U 0.1/U constant/transportProperties

@@ -106,6 +106,7 @@ void run(const isph::ArgList& args) {
   }
   progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
+  isph::info("{}", solver.safeguardSummary());
   isph::info("Mean neighbours per particle (last step): {:.1f}", isph::meanNeighbours(solver.particles()));
   if (solver.distributed()) isph::info("{}", solver.distributed()->balanceSummary());
   if (const std::string amg = solver.preconditionerSummary(); !amg.empty()) isph::info("{}", amg);
