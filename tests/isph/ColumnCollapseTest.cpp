@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -186,4 +187,20 @@ TEST(ColumnCollapseElasticPlastic, FollowsBuiEtAl2008WithAStaticWedge) {
   EXPECT_LT(d.cornerMeanMove, 0.25 * dx) << "mean motion of the rods near the top-left corner";
 }
 
+// elasticPlastic is a model of the weakly-compressible method: with the projection method the
+// solver stops at its start, naming the file, the model and the method to choose.
+TEST(ColumnCollapseElasticPlastic, WithTheProjectionMethodIsAClearError) {
+  CaseRunner c("columnCollapse", "columnElasticPlasticIsph");
+  c.useVariant("elasticPlastic");
+  c.set("system/particleMeshDict", "spacing", "0.01");
+  ASSERT_NO_FATAL_FAILURE(c.replaceText("system/isphSchemes", "method          wcsph;", "method          isph;"));
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
+  EXPECT_NE(c.run(SOLVER_EXE, "isphLandslideFoam"), 0);
+  std::ifstream in(c.path() / "log.isphLandslideFoam");
+  const std::string log((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(log.find("constant/materialProperties: model elasticPlastic runs with `method wcsph;`"), std::string::npos)
+      << log;
+}
+
 }  // namespace
+
