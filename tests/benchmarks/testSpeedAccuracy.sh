@@ -45,21 +45,26 @@ do
     check "$c" "two timed runs, the cost their median" \
         "split(\$18, t, \";\") == 2 && t[1] > 0 && t[2] > 0 && (\$6 - (t[1] + t[2]) / 2) ^ 2 < 1e-10 * \$6 ^ 2"
 done
-# The dam break is water: explicit plasticity is implicit there and is not run.
-if awk -F, '$1 == "damBreak" && $2 == "explicit" && $8 != "notRun" { exit 1 }' "$csv"
-then echo "ok:   damBreak explicit: not run"; else echo "FAIL: damBreak explicit was run"; fail=1; fi
+# The dam break is water: explicit plasticity is implicit there, elasticPlastic is wcsph.
+for m in explicit elasticPlastic
+do
+    if awk -F, -v m=$m '$1 == "damBreak" && $2 == m && $8 != "notRun" { exit 1 }' "$csv"
+    then echo "ok:   damBreak $m: not run"; else echo "FAIL: damBreak $m was run"; fail=1; fi
+done
 
-# The layer at rest (20 mm, 0.1 s): p within 50 % (L2) of the lithostatic pressure (p = 0 is
-# 100 %; measured: implicit 0.5 %, explicit 19 %, wcsph 29 %), an interior spread below 20 %
-# of rho g H (measured 0.09, 7.4, 3.4 %), nothing moved more than dx/4 = 5 mm (measured below
-# 1 mm; a creeping layer does: explicit plasticity with etaMax 100 moved 11.6 mm in 0.1 s).
-check granularAtRest "L2 error of p < 0.5" "$(finite '$11') && \$11 < 0.5"
-check granularAtRest "interior spread < 0.2" "$(finite '$12') && \$12 < 0.2"
+# The layer at rest (20 mm, 0.1 s, five particles over the depth), judged by the tractions on
+# bed-parallel planes that statics fixes (p itself is not: README): sigma_nn within 50 % (L2)
+# of rho |g| cos(beta) depth (p = 0 is 100 %; measured: implicit 19.2 %, explicit 22.6 %, wcsph
+# 8.1 %, elasticPlastic 18.4 %), sigma_nt within 80 % of rho |g| sin(beta) depth (tau = 0 is
+# 100 %; measured 34.3, 42.9, 47.9, 49.6 %), nothing moved more than dx/4 = 5 mm (measured
+# below 1 mm; a creeping layer does: explicit plasticity with etaMax 100 moved 11.6 mm in 0.1 s).
+check granularAtRest "L2 error of sigma_nn < 0.5" "$(finite '$11') && \$11 < 0.5"
+check granularAtRest "L2 error of sigma_nt < 0.8" "$(finite '$12') && \$12 < 0.8"
 check granularAtRest "largest displacement < dx/4" "$(finite '$13') && \$13 < 0.25 * \$3"
 # The column collapse (10 mm, 0.2 s, against the final deposit, toe 0.4423 m): the toe has
 # left the column (error above -50 %: a column that does not move is at -55 %; measured -38.6
-# to -40.0 %) and is not past the measured final toe by more than 20 % (a runaway is); the
-# surface within 4 cm RMS of the final one (the column is 10 cm high; measured 3.0 cm).
+# to -40.0 %; elasticPlastic -37.7 %) and is not past the measured final toe by more than 20 % (a runaway is); the
+# surface within 4 cm RMS of the final one (the column is 10 cm high; measured 2.8-3.0 cm).
 check columnCollapse "run-out error in (-50 %, 20 %)" "$(finite '$14') && \$14 > -50 && \$14 < 20"
 check columnCollapse "surface RMS < 0.04 m" "$(finite '$15') && \$15 < 0.04"
 # The dam break (a/5, 0.17 s): the front within 25 % of Martin & Moyce for T <= 3 at every
