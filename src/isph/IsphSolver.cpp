@@ -80,6 +80,18 @@ std::pair<double, double> elasticPlasticSpeeds(const MaterialTable& materials, M
   return {sound, wave};
 }
 
+// A field read in the order of `writtenIds`, put into the order of `ids` (the cloud is
+// reordered after reading).
+template <class T>
+std::vector<T> inOrderOf(const std::vector<label>& ids, const std::vector<T>& written,
+                         const std::vector<label>& writtenIds) {
+  std::unordered_map<label, std::size_t> at;
+  for (std::size_t i = 0; i < writtenIds.size(); ++i) at[writtenIds[i]] = i;
+  std::vector<T> out(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) out[i] = written[at.at(ids[i])];
+  return out;
+}
+
 }  // namespace
 
 IsphSolver::IsphSolver(const Time& time, bool parallel) {
@@ -96,13 +108,13 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
       distributed_ ? readStepStateOverRanks(time.startPath(), time.decomposedStart(), ps_.cloud.origId)
                    : readStepState(time.startPath());
   if (state) info("    solver state (step {}) read from {}/uniform/isphState", state->stepsTaken, time.timeName());
-  // The densities of a weakly-compressible run (its state beside p), by origId: the cloud is
-  // reordered below.
-  std::unordered_map<label, double> writtenDensity;
-  const std::vector<label> writtenIds = ps_.cloud.origId;  // the order of the fields read
-  if (const auto file = time.startPath() / "lagrangian" / cloudName / "rho"; std::filesystem::is_regular_file(file)) {
-    const auto rho = readField<scalar>(file, ps_.cloud.size());
-    for (std::size_t i = 0; i < rho.size(); ++i) writtenDensity[ps_.cloud.origId[i]] = rho[i];
+  // The state of a weakly-compressible run beside p, in the order read: the densities, and
+  // the deviatoric stress of an elastic-plastic material (its tau). The cloud is reordered below.
+  const std::vector<label> writtenIds = ps_.cloud.origId;
+  const auto fieldFile = [&](const char* name) { return time.startPath() / "lagrangian" / cloudName / name; };
+  std::vector<scalar> writtenDensity;
+  if (std::filesystem::is_regular_file(fieldFile("rho"))) {
+    writtenDensity = readField<scalar>(fieldFile("rho"), writtenIds.size());
   }
 
   info("\nReading system/isphSchemes");
@@ -166,23 +178,17 @@ IsphSolver::IsphSolver(const Time& time, bool parallel) {
       std::vector<Vec3> atRest(ps_.nMaterial, g_);  // u* = g dt with dt = 1
       updateWallPressure(ps_, atRest, g_, 1.0);
     }
-    if (writtenDensity.size() == ps_.size()) {  // a restart of a weakly-compressible run
-      std::vector<double> rho(ps_.size());
-      for (std::size_t i = 0; i < ps_.size(); ++i) rho[i] = writtenDensity.at(ps_.cloud.origId[i]);
-      wcsph_->setDensity(std::move(rho));
+    if (!writtenDensity.empty()) {  // a restart of a weakly-compressible run
+      wcsph_->setDensity(inOrderOf(ps_.cloud.origId, writtenDensity, writtenIds));
       info("    densities of the weakly-compressible state read from {}", time.timeName());
     } else {
       wcsph_->initialiseDensity(ps_);
     }
     if (elasticWave > 0) {  // elasticPlastic: s is the state, written as tau (ElasticPlasticStress.hpp)
       elastic_ = std::make_unique<ElasticPlasticStress>();
-      const auto file = time.startPath() / "lagrangian" / cloudName / "tau";
-      if (std::filesystem::is_regular_file(file)) {
-        const auto written = readField<SymmTensor>(file, ps_.cloud.size());
-        std::unordered_map<label, SymmTensor> byId;
-        for (std::size_t i = 0; i < written.size(); ++i) byId[writtenIds[i]] = written[i];
-        std::vector<SymmTensor> tau(ps_.size());
-        for (std::size_t i = 0; i < ps_.size(); ++i) tau[i] = byId.at(ps_.cloud.origId[i]);
+      if (std::filesystem::is_regular_file(fieldFile("tau"))) {
+        const auto written = readField<SymmTensor>(fieldFile("tau"), writtenIds.size());
+        const std::vector<SymmTensor> tau = inOrderOf(ps_.cloud.origId, written, writtenIds);
         elastic_->initialise(ps_, &tau);
         info("    deviatoric stresses of the elastic-plastic state read from {}", time.timeName());
       } else {
@@ -325,10 +331,7 @@ std::string IsphSolver::preconditionerSummary() const {
 
 const std::vector<SymmTensor>* IsphSolver::deviatoricStress() {
   if (!materials_->anyDeviatoricStress()) return nullptr;
-  if (elastic_ && tauStep_ != stepsTaken_) {  // the start time: the state read
-    tau_ = elastic_->deviatoric();
-    tauStep_ = stepsTaken_;
-  }
+  if (elastic_) return &elastic_->deviatoric();  // the state: s after the last step, or read
   if (tauStep_ != stepsTaken_) {
     // No step taken yet (the start time): τ = 2 η D of the state read, as the first step's
     // predictor will see it. (The time step must not depend on whether a write asked: the
@@ -581,8 +584,6 @@ StepReport IsphSolver::stepWeaklyCompressible(const Time& time) {
     auto t = timer_.scope("rheology");
     if (elastic_) {  // s^{n+1} from uⁿ, then the momentum with it: symplectic in (s, u)
       elastic_->update(ps_, *materials_, dt);
-      tau_ = elastic_->deviatoric();
-      tauStep_ = stepsTaken_;
     } else {
       updateRheology();
       keepActingStress(nullptr);

@@ -172,7 +172,7 @@ TEST(ColumnCollapseIncrementalGradient, KeepsTheWedgeAgainstTheWall) {
 // 0.32 mm. The checks leave that spread a margin: toe within 15 %, RMS below 4 mm, the wedge's
 // top within 2 % of 0.1 m and its corner rods within dx/4 on average (the static wedge that
 // the projection method does not keep: the disabled test above), area within 3 %. At 2 mm the
-// tutorial gives toe -1.9 to -3.7 %, RMS 2.9-3.3 mm, 0.0995 m at the wall (three runs), as
+// tutorial gives toe -1.9 and -3.7 %, RMS 3.1 and 3.3 mm, 0.0995 m at the wall (two runs), as
 // SPHinXsys does with this model and these parameters (toe -0.9 %, RMS 2.86 mm, 0.0995 m:
 // doc/notes/elasticPlastic.md).
 TEST(ColumnCollapseElasticPlastic, FollowsBuiEtAl2008WithAStaticWedge) {
