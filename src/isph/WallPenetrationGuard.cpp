@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <limits>
+
 #include "isph/parallel/GhostExchange.hpp"
 #include "parallel/Reduce.hpp"
 
@@ -15,7 +17,9 @@ WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
   const double dmin = distance * ps.dx;
   const long n = static_cast<long>(ps.nMaterial);
   long moved = 0, crossed = 0;
-  long first = -1;
+  // The lowest index that crossed, as the max of −a − 1 (none: the lowest long, which every
+  // candidate beats; a start of −1 was particle 0's and named it for every crossing).
+  long first = std::numeric_limits<long>::min();
 #pragma omp parallel for schedule(static) reduction(+ : moved, crossed) reduction(max : first)
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
