@@ -1,8 +1,32 @@
 #include "isph/ElasticPlasticStress.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/Error.hpp"
 #include "isph/materials/DruckerPragerElasticPlastic.hpp"
 
 namespace isph {
+
+std::pair<double, double> elasticPlasticSpeeds(const MaterialTable& materials, Method method) {
+  double sound = 0, wave = 0;
+  std::size_t elastic = 0;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (!materials[i].integratesStress()) continue;
+    ++elastic;
+    const auto& m = static_cast<const DruckerPragerElasticPlastic&>(materials[i]);
+    sound = std::max(sound, m.bulkSpeed());
+    wave = std::max(wave, m.waveSpeed());
+  }
+  if (elastic > 0 && (method != Method::wcsph || elastic != materials.size())) {
+    fatalError(fmt::format("constant/materialProperties: model elasticPlastic runs with `method wcsph;` in "
+                           "system/isphSchemes and with no other model in the scene; found {} of {} materials "
+                           "elasticPlastic{}",
+                           elastic, materials.size(), method != Method::wcsph ? " and the projection method" : ""));
+  }
+  return {sound, wave};
+}
 
 void ElasticPlasticStress::initialise(const ParticleSystem& ps, const std::vector<SymmTensor>* written) {
   s_.assign(ps.size(), SymmTensor::Zero());

@@ -13,9 +13,11 @@
 //
 // s is the state: it is the τ written in every time directory (field tau), from which a
 // restart continues; a case without it starts from s = 0 (an isotropic stress, −p I).
+#include <utility>
 #include <vector>
 
 #include "core/Types.hpp"
+#include "isph/IsphSchemes.hpp"
 #include "isph/ParticleSystem.hpp"
 #include "isph/materials/MaterialTable.hpp"
 
@@ -35,5 +37,10 @@ class ElasticPlasticStress {
  private:
   std::vector<SymmTensor> s_;
 };
+
+// The largest sound speed √(K/ρ) and P-wave speed of the scene's elasticPlastic materials
+// (0, 0: none). FatalError if such a material shares the scene with another model or runs
+// with the projection method.
+std::pair<double, double> elasticPlasticSpeeds(const MaterialTable& materials, Method method);
 
 }  // namespace isph

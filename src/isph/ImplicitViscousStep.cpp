@@ -202,7 +202,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       if (settled) break;
     }
     activeSet_.remember(c.origId);
-    keepIncrement(ps, dt, force, ustar);  // (parallel: ustar of the own rows; ghosts follow in IsphSolver)
+    keepIncrement(ps, dt, force, ustar);  // (parallel: ustar of the own rows; ghosts follow in ProjectionSolver)
     ++frictionSolves_;
     frictionSettled_ += lastSettled_;
     frictionPassesDone_ += lastPasses_;

@@ -2,8 +2,9 @@
 // How the equations are discretised: system/isphSchemes. Every keyword has a default that
 // is echoed in the log; unknown keywords get a "did you mean" warning.
 //
-//   method           isph;           // | wcsph: the projection (the paper's method), or the explicit
-//                                    // weakly-compressible baseline (WeaklyCompressibleStep.hpp)
+//   method           isph;           // | wcsph: the solver class, by name (solvers/): the projection
+//                                    // (the paper's method, ProjectionSolver), or the explicit
+//                                    // weakly-compressible baseline (WeaklyCompressibleSolver)
 //   wcsph            { soundSpeed 20; densityDiffusion 0.1; artificialViscosity 0.1; }
 //                    soundSpeed [m/s]: c0 of the equation of state (default 10 sqrt(2 |g| H), H the
 //                    height of the scene: 10x the speed of a free fall over it); densityDiffusion:
@@ -34,7 +35,7 @@
 //                                    // material has one): semi-implicit solve or explicit sum
 //   incrementalPressure none;        // | granular | all: with the implicit term, the viscous
 //                                    // solve sees the pressure force of the last step and
-//                                    // Eq. 11 corrects with the change (IsphSolver.hpp), in
+//                                    // Eq. 11 corrects with the change (solvers/ProjectionSolver.hpp), in
 //                                    // scenes with a granular material or in all; default none
 //                                    // (slidingBlock uses granular)
 //   laggedPressure   { form pairs; smoothing 0; }  // | gradient: with incrementalPressure,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/Error.hpp"
 #include "core/fields/FieldIO.hpp"
@@ -127,6 +128,27 @@ void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
             "largest side and 10 dx.\n    A field edited by hand? Restart from an earlier time.",
             c.origId[a], where, x.x(), x.y(), x.z(), domain.min.x(), domain.min.y(), domain.min.z(),
             domain.max.x(), domain.max.y(), domain.max.z(), domainSource));
+  }
+}
+
+void checkStillInDomain(const ParticleSystem& ps, const SceneDomain& domain, const Time& time) {
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {  // (parallel: the own; an error ends every rank)
+    const Vec3& x = ps.cloud.positions[a];
+    const Vec3& u = ps.cloud.U[a];
+    if (!x.allFinite() || !u.allFinite() || !std::isfinite(ps.cloud.p[a])) {
+      fatalError(fmt::format("the solution diverged at time {}: particle {} (origId {}) has a non-finite position, "
+                             "velocity or pressure.\n    The last written time directory is intact; try a smaller "
+                             "maxCo or maxDeltaT.",
+                             time.timeName(), a, ps.cloud.origId[a]));
+    }
+    if ((x.array() < domain.min.array()).any() || (x.array() > domain.max.array()).any()) {
+      fatalError(fmt::format("particle {} (origId {}) left the domain at time {}: position ({:.4g} {:.4g} {:.4g}), "
+                             "velocity ({:.3g} {:.3g} {:.3g}); the domain is the initial bounding box enlarged by "
+                             "its largest side, ({:.4g} {:.4g}) to ({:.4g} {:.4g}).\n    The last written time directory "
+                             "is intact.",
+                             a, ps.cloud.origId[a], time.timeName(), x.x(), x.y(), x.z(), u.x(), u.y(), u.z(),
+                             domain.min.x(), domain.min.y(), domain.max.x(), domain.max.y()));
+    }
   }
 }
 

@@ -8,7 +8,7 @@
 //    step to the interval: writeInterval 1e-12 ran at deltaT 1e-12);
 //  - a material particle outside the scene's domain: the bounding box of the case's first
 //    particles (those particleMesh made) enlarged each way by its largest side and 10 dx, the
-//    margin within which the solver keeps the particles during the run (IsphSolver).
+//    margin within which the solver keeps the particles during the run (checkStillInDomain).
 // Fields that are not finite numbers are refused by the field readers (FieldIO.hpp).
 #include <filesystem>
 #include <optional>
@@ -47,5 +47,10 @@ SceneDomain startDomain(const Time& time, const std::string& cloudName, const Pa
 // material particle outside `domain`, its origId and position, and the domain.
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
                        const std::filesystem::path& cloudDir, const std::string& domainSource);
+
+// The check after every step: FatalError when a material particle (this rank's own) has a
+// non-finite position, velocity or pressure, or left `domain`, naming it, the time and that the
+// last written time directory is intact.
+void checkStillInDomain(const ParticleSystem& ps, const SceneDomain& domain, const Time& time);
 
 }  // namespace isph

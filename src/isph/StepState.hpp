@@ -16,7 +16,7 @@
 // (from the material's height at the first start, not at the restart), the domain that the
 // particles must stay in, and the active set's stick/slip states (a restart that took them
 // afresh from the velocities needed 4 velocity solves in its first step against 1). The AMG
-// hierarchies of the linear solvers cannot be written: IsphSolver rebuilds them after every
+// hierarchies of the linear solvers cannot be written: the solver rebuilds them after every
 // write, in the uninterrupted run as in the restart. Exact: doubles are written in their
 // shortest round-trip form (the arrays in binary, or ascii with 17 digits).
 #include <filesystem>

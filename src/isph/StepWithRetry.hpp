@@ -13,15 +13,15 @@
 #include <functional>
 
 #include "core/time/Time.hpp"
-#include "isph/IsphSolver.hpp"
+#include "isph/solvers/ParticleSolver.hpp"
 
 namespace isph {
 
 // `step` advances the particles by time.deltaT() and, when one of its solves fails, leaves them
-// as at the step start (IsphSolver::step does). Call after ++time.
+// as at the step start (ParticleSolver::step does). Call after ++time.
 StepReport stepWithRetry(Time& time, const std::function<StepReport(const Time&)>& step);
 
-inline StepReport stepWithRetry(Time& time, IsphSolver& solver) {
+inline StepReport stepWithRetry(Time& time, ParticleSolver& solver) {
   return stepWithRetry(time, [&solver](const Time& t) { return solver.step(t); });
 }
 

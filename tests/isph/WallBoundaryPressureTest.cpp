@@ -46,7 +46,7 @@ struct Plate {
     }
     initialiseParticleSystem(ps, *materials, *kernel);
     ps.neighbours.build(ps.cloud.positions, *kernel);
-    ps.frictionWall.assign(ps.size(), 1);  // as IsphSolver sets it: the plate has friction
+    ps.frictionWall.assign(ps.size(), 1);  // as the solver sets it: the plate has friction
     ps.wallPullLimit.assign(ps.size(), 0.0);
     ps.wallTangentialGradient.assign(ps.nMaterial, Vec3::Zero());
   }

@@ -1,7 +1,8 @@
 // isphLandslideFoam: incompressible SPH for flow-like landslides (the paper's projection
 // method, Eqs. 6-11). Reads the particles of the start time, steps them to endTime and
 // writes time directories as system/controlDict says; every time directory is a restart.
-// With isphSchemes `method wcsph;` it runs the explicit weakly-compressible baseline instead.
+// The method is chosen by name, isphSchemes `method` (solvers/ParticleSolver.hpp): the projection
+// by default, `method wcsph;` the explicit weakly-compressible baseline.
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
 // Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) writes the time at the end of the step
 // and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
@@ -24,9 +25,9 @@
 #include "core/app/ResourceUsage.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
-#include "isph/IsphSolver.hpp"
 #include "isph/StartupChecks.hpp"
 #include "isph/StepWithRetry.hpp"
+#include "isph/solvers/ParticleSolver.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "parallel/DecomposedCase.hpp"
 #include "parallel/Reduce.hpp"
@@ -55,7 +56,8 @@ void run(const isph::ArgList& args) {
   isph::checkEndTime(time);
   isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
   std::optional<isph::Building> building(std::in_place, fmt::format("the solver from time {}", time.timeName()));
-  isph::IsphSolver solver(time, parallel);
+  const std::unique_ptr<isph::ParticleSolver> solverPtr = isph::ParticleSolver::New(time, parallel);
+  isph::ParticleSolver& solver = *solverPtr;
   building.reset();
   isph::checkWriteInterval(time, time.settings().adjustTimeStep ? solver.nextDeltaT(time).value()
                                                                 : time.settings().deltaT);

@@ -58,6 +58,9 @@ class Dictionary {
 
   // Parse a file (with #include and $ substitution); FatalError on bad syntax.
   static Dictionary readFile(const std::filesystem::path& file);
+  // The file's dictionary, or, when there is no such file, an empty one named after it (the
+  // log says "<what> not found: using the defaults").
+  static Dictionary readOptionalFile(const std::filesystem::path& file, const std::string& what);
   // Parse text; `fileName` is what error messages and relative #include paths use.
   static Dictionary parse(std::string_view text, const std::string& fileName);
   // Parse only the first entry (the FoamFile header of a field file); `end` receives the

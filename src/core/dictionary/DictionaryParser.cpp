@@ -392,6 +392,12 @@ Dictionary Dictionary::readFile(const std::filesystem::path& file) {
   return parse(readDictionaryText(file), file.string());
 }
 
+Dictionary Dictionary::readOptionalFile(const std::filesystem::path& file, const std::string& what) {
+  if (std::filesystem::exists(file)) return readFile(file);
+  info("    {} not found: using the defaults", what);
+  return Dictionary(file.string());
+}
+
 Dictionary Dictionary::parse(std::string_view text, const std::string& fileName) {
   auto file = std::make_shared<const std::string>(fileName);
   Dictionary dict(fileName, SourceLocation{file, 0, 0});

@@ -3,7 +3,7 @@
 // a part of them (Zoltan's partition, system/decomposeParDict) and, for a step, holds ghosts,
 // copies of the other ranks' particles within the kernel support (Halo), laid out as
 // ParticleSystem.hpp says (own particles of each kind first, then that kind's ghosts).
-// IsphSolver keeps one when it runs with -parallel and calls it where its source says
+// ParticleSolver keeps one when it runs with -parallel and calls it where its source says
 // "parallel:":
 //   read()        this rank's particles of the start time: processor<rank>/<start> of a
 //                 decomposed case, or, for an undecomposed start, <start> read by rank 0;

@@ -1,0 +1,49 @@
+#include "isph/ViscousStress.hpp"
+
+#include "isph/EffectiveViscosity.hpp"
+
+namespace isph {
+
+ViscousStress::ViscousStress(const ParticleSystem& ps, const MaterialTable& materials,
+                             const KernelGradientCorrection& correction, double correctionMinDeterminant)
+    : ps_(ps), materials_(materials), correction_(correction), minDeterminant_(correctionMinDeterminant) {}
+
+void ViscousStress::update() {
+  if (!materials_.anyDeviatoricStress()) {
+    eta_.clear();
+    return;
+  }
+  strain_.compute(ps_, materials_, correction_, minDeterminant_);
+  maxNu_ = effectiveViscosity(ps_, materials_, strain_, eta_);
+}
+
+void ViscousStress::keepActing(const std::vector<Vec3>* ustar, long step) {
+  if (!materials_.anyDeviatoricStress()) return;
+  if (ustar) {
+    StrainRate acting;
+    acting.compute(ps_, materials_, correction_, minDeterminant_, *ustar);
+    tau_ = deviatoricStress(ps_, acting, eta_);
+  } else {
+    tau_ = deviatoricStress(ps_, strain_, eta_);
+  }
+  tauStep_ = step;
+}
+
+const std::vector<SymmTensor>* ViscousStress::tau(long step) {
+  if (!materials_.anyDeviatoricStress()) return nullptr;
+  if (tauStep_ != step) {
+    const double maxNu = maxNu_;  // (the time step must not depend on whether a write asked)
+    update();
+    maxNu_ = maxNu;
+    tau_ = deviatoricStress(ps_, strain_, eta_);
+    tauStep_ = step;
+  }
+  return &tau_;
+}
+
+void ViscousStress::restore(bool known, double maxNu) {
+  maxNu_ = maxNu;
+  if (known) eta_.assign(ps_.nMaterial, 0.0);  // only whether η exists matters before the next step
+}
+
+}  // namespace isph
