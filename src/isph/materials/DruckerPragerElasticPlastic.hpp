@@ -36,6 +36,7 @@ class DruckerPragerElasticPlastic final : public MaterialModel {
   double viscosity(double, double) const override { return 0.0; }
   double maxViscosity() const override { return 0.0; }
   WallContact wallContact() const override { return WallContact::coulombFriction; }
+  bool granular() const override { return true; }
   std::string describe() const override;
 
   double bulkModulus() const { return K_; }

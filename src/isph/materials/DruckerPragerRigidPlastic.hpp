@@ -37,6 +37,7 @@ class DruckerPragerRigidPlastic final : public MaterialModel {
   double viscosity(double p, double shearRate) const override;
   double maxViscosity() const override { return etaMax_; }
   WallContact wallContact() const override { return WallContact::coulombFriction; }
+  bool granular() const override { return true; }
   void adaptToScene(const SceneScales& scene) override;
   std::string describe() const override;
 

@@ -39,6 +39,9 @@ class MaterialModel {
   // Upper bound of viscosity() (for the explicit viscous time-step limit).
   virtual double maxViscosity() const = 0;
   virtual WallContact wallContact() const { return WallContact::noSlip; }
+  // A granular material (a soil model): the schemes that isphSchemes applies to granular
+  // materials (freeSurface's `compressed granular`, `incrementalPressure granular`) act on it.
+  virtual bool granular() const { return false; }
   // True for a model that integrates its stress in time (elasticPlastic, ElasticPlasticStress)
   // instead of deriving it from a viscosity: viscosity() is then unused.
   virtual bool integratesStress() const { return false; }

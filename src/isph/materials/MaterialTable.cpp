@@ -25,6 +25,10 @@ bool MaterialTable::anyDeviatoricStress() const {
   return std::any_of(models_.begin(), models_.end(), [](const auto& m) { return m->hasDeviatoricStress(); });
 }
 
+bool MaterialTable::anyGranular() const {
+  return std::any_of(models_.begin(), models_.end(), [](const auto& m) { return m->granular(); });
+}
+
 double MaterialTable::maxViscosity() const {
   double v = 0;
   for (const auto& m : models_) v = std::max(v, m->maxViscosity());

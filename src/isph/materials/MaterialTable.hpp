@@ -18,6 +18,7 @@ class MaterialTable {
   const MaterialModel& operator[](std::size_t i) const { return *models_[i]; }
   MaterialModel& operator[](std::size_t i) { return *models_[i]; }
   bool anyDeviatoricStress() const;
+  bool anyGranular() const;  // MaterialModel::granular
   double maxViscosity() const;
   double maxRho() const;
 

@@ -27,19 +27,15 @@ ProjectionSolver::ProjectionSolver(const Time& time, bool parallel) : ParticleSo
   for (std::size_t i = 0; i < materials_->size(); ++i) {
     keepCompressed[i] = schemes_.compressedSurface == CompressedSurface::all ||
                         (schemes_.compressedSurface == CompressedSurface::granular &&
-                         (*materials_)[i].wallContact() == WallContact::coulombFriction);
+                         (*materials_)[i].granular());
   }
   ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
                                                    std::move(keepCompressed));
   if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
     viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), ps_.cloud.properties.dimension,
                                                      schemes_.frictionPasses);
-    bool granular = false;
-    for (std::size_t i = 0; i < materials_->size(); ++i) {
-      granular = granular || (*materials_)[i].wallContact() == WallContact::coulombFriction;
-    }
     incremental_ = schemes_.incrementalPressure == MaterialScope::all ||
-                   (schemes_.incrementalPressure == MaterialScope::granular && granular);
+                   (schemes_.incrementalPressure == MaterialScope::granular && materials_->anyGranular());
   }
   solution.checkKeywords({"U"});
   finishConstruction();
