@@ -7,7 +7,7 @@
 #include "core/Log.hpp"
 #include "core/Registry.hpp"
 #include "core/dictionary/Dictionary.hpp"
-#include "particleGeneration/MaterialTable.hpp"
+#include "particleGeneration/SceneMaterials.hpp"
 #include "particleGeneration/ShapeInput.hpp"
 #include "sph/kernels/Kernel.hpp"
 
@@ -130,7 +130,7 @@ void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
   const Dictionary& regions = dict.subDict("regions");
   if (regions.size() == 0)
     warning("no material regions: the cloud will hold walls only", regions.location());
-  MaterialTable table;
+  SceneMaterials table;
   bool tableRead = false;
   for (const Entry& e : regions.entries()) {
     const Dictionary& d =
@@ -143,7 +143,7 @@ void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
         RegionRegistry::create(type, "region type", d.findEntry("type")->location(), d, context);
     const std::string material = d.get<std::string>("material");
     if (!tableRead) {
-      table = MaterialTable::read(caseDir / "constant" / "materialProperties");
+      table = SceneMaterials::read(caseDir / "constant" / "materialProperties");
       scene.materials = table.names();
       tableRead = true;
     }

@@ -1,4 +1,4 @@
-#include "particleGeneration/MaterialTable.hpp"
+#include "particleGeneration/SceneMaterials.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 
 namespace isph {
 
-MaterialTable MaterialTable::read(const std::filesystem::path& file) {
+SceneMaterials SceneMaterials::read(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) {
     fatalError(fmt::format(
         "cannot open {}: the material regions of system/particleMeshDict name materials, which "
@@ -16,7 +16,7 @@ MaterialTable MaterialTable::read(const std::filesystem::path& file) {
         file.string()));
   }
   const Dictionary dict = Dictionary::readFile(file);
-  MaterialTable table;
+  SceneMaterials table;
   table.file_ = file.string();
   table.materials_ = dict.subDict("materials");
   for (const Entry& e : table.materials_.entries()) {
@@ -31,7 +31,7 @@ MaterialTable MaterialTable::read(const std::filesystem::path& file) {
   return table;
 }
 
-label MaterialTable::index(const std::string& name, const SourceLocation& where) const {
+label SceneMaterials::index(const std::string& name, const SourceLocation& where) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
   if (it == names_.end()) {
     fatalIOError(where, fmt::format("unknown material '{}': {} defines {}{}", name, file_,
@@ -41,7 +41,7 @@ label MaterialTable::index(const std::string& name, const SourceLocation& where)
   return static_cast<label>(it - names_.begin());
 }
 
-double MaterialTable::density(label m) const {
+double SceneMaterials::density(label m) const {
   const Dictionary& d = materials_.subDict(names_.at(static_cast<std::size_t>(m)));
   const double rho = d.get<double>("rho");
   if (!(rho > 0)) {

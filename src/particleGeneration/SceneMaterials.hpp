@@ -13,11 +13,11 @@
 
 namespace isph {
 
-class MaterialTable {
+class SceneMaterials {
  public:
-  MaterialTable() = default;
+  SceneMaterials() = default;
   // FatalError when the file is missing or has no `materials` dictionary.
-  static MaterialTable read(const std::filesystem::path& file);
+  static SceneMaterials read(const std::filesystem::path& file);
 
   const std::vector<std::string>& names() const { return names_; }
   // The label of `name`; a FatalIOError at `where` (the keyword naming it) when unknown.
