@@ -25,9 +25,9 @@ const char* toString(PpeSource s) {
   return "?";
 }
 
-IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
-  IsphSchemes s;
-  s.method = d.getChoiceOrDefault("method", {"isph", "wcsph"}, "isph") == "wcsph" ? Method::wcsph : Method::isph;
+namespace {
+
+void readWeaklyCompressible(const Dictionary& d, IsphSchemes& s) {
   const Dictionary wc = d.subDictOrEmpty("wcsph");
   if (s.method == Method::wcsph) {
     if (wc.found("soundSpeed")) {  // else from the scene (the solver logs the value)
@@ -40,11 +40,10 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
     requireRange(wc, "artificialViscosity", s.artificialViscosity, 0.0, 10.0);
   }
   wc.checkKeywords({"soundSpeed", "densityDiffusion", "artificialViscosity"});
-  s.kernel = d.getOrDefault("kernel", s.kernel);
-  s.hOverDx = d.getOrDefault("hOverDx", s.hOverDx);
-  requireRange(d, "hOverDx", s.hOverDx, 0.5, 4.0);
-  s.kernelCorrection = d.getOrDefault("kernelCorrection", s.kernelCorrection);
+}
 
+// The PPE's Laplacian and source (the projection only).
+void readPressurePoisson(const Dictionary& d, IsphSchemes& s) {
   const Dictionary lap = d.subDictOrEmpty("laplacian");
   s.laplacianEta = lap.getOrDefault("eta", s.laplacianEta);
   requireRange(lap, "eta", s.laplacianEta, 1e-6, 1.0);
@@ -64,7 +63,9 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   s.boundaryRelaxation = src.getOrDefault("relaxation", s.boundaryRelaxation);
   requireRange(src, "relaxation", s.boundaryRelaxation, 0.0, 1.0);
   src.checkKeywords({"alpha"});
+}
 
+void readFreeSurface(const Dictionary& d, int dimension, IsphSchemes& s) {
   const Dictionary fs = d.subDictOrEmpty("freeSurface");
   s.freeSurfaceThreshold = fs.getOrDefault("threshold", dimension == 2 ? 1.5 : 2.75);
   requireRange(fs, "threshold", s.freeSurfaceThreshold, 0.0, double(dimension));
@@ -77,9 +78,9 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
                         : compressed == "all" ? CompressedSurface::all
                                               : CompressedSurface::granular;
   fs.checkKeywords();
+}
 
-  s.tensionCutoff = d.getOrDefault("tensionCutoff", s.tensionCutoff);
-
+void readShifting(const Dictionary& d, IsphSchemes& s) {
   const Dictionary sh = d.subDictOrEmpty("shifting");
   s.shifting = sh.getOrDefault("enabled", s.shifting);
   if (s.shifting) {
@@ -90,7 +91,10 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
     s.shiftPairsNearSurface = sh.getChoiceOrDefault("nearSurface", {"none", "pairs"}, "none") == "pairs";
   }
   sh.checkKeywords({"coefficient", "maxShift", "nearSurface"});
+}
 
+// The time-step factors and the two safeguards.
+void readStepControls(const Dictionary& d, IsphSchemes& s) {
   const Dictionary ts = d.subDictOrEmpty("timeStep");
   s.forceFactor = ts.getOrDefault("forceFactor", s.forceFactor);
   requireRange(ts, "forceFactor", s.forceFactor, 1e-6, 10.0);
@@ -109,7 +113,11 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   s.wallSafeguardDistance = ws.getOrDefault("distance", s.wallSafeguardDistance);
   requireRange(ws, "distance", s.wallSafeguardDistance, 0.0, 1.0);
   ws.checkKeywords();
+}
 
+// The deviatoric term, and the incremental projection with its lagged pressure and the form
+// of Eq. 11 (the projection only).
+void readViscousAndProjection(const Dictionary& d, IsphSchemes& s) {
   const bool wcsph = s.method == Method::wcsph;
   s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, wcsph ? "explicit" : "implicit") ==
                           "explicit"
@@ -121,6 +129,7 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
                              "method (method wcsph) is explicit: use 'viscousTerm explicit' or remove the entry",
                              d.name()));
   }
+  if (wcsph) return;
   const std::string incremental = d.getChoiceOrDefault("incrementalPressure", {"none", "granular", "all"}, "none");
   s.incrementalPressure = incremental == "none" ? MaterialScope::none
                           : incremental == "all" ? MaterialScope::all
@@ -144,7 +153,10 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
                                "symmetric"
                            ? PressureGradientForm::symmetric
                            : PressureGradientForm::renormalised;
+  if (const Entry* e = d.findEntry("pressureGradient")) s.pressureGradientAt = e->location();
+}
 
+void readWallFriction(const Dictionary& d, IsphSchemes& s) {
   const Dictionary wf = d.subDictOrEmpty("wallFriction");
   if (wf.found("slipSpeed")) {
     s.frictionSlipSpeed = wf.get<double>("slipSpeed");
@@ -156,7 +168,69 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
                          ? FrictionNormal::hydrostatic
                          : FrictionNormal::wallPressure;
   wf.checkKeywords();
+}
 
+// The settings that exclude each other whatever the scene: a FatalIOError at the entry that
+// would be ignored; with method wcsph, a warning at each of the projection's entries. (pressureGradient symmetric with `incrementalPressure granular` depends on
+// the scene's materials: ProjectionSolver checks it.)
+void checkConflicts(const Dictionary& d, const IsphSchemes& s) {
+  const auto conflict = [&](const Dictionary& where, const char* key, const std::string& why) {
+    fatalIOError(where.findEntry(key)->location(), fmt::format("keyword '{}' in {}: {}", key, where.name(), why));
+  };
+  if (s.method == Method::wcsph) {  // no PPE, no implicit solve: the projection's entries are not read
+    for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
+      if (const Entry* e = d.findEntry(key)) {
+        warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
+                            d.name()),
+                e->location());
+        d.markRead(key);
+      }
+    }
+    return;
+  }
+  const bool incremental = s.incrementalPressure != MaterialScope::none;
+  if (incremental && s.viscousTerm == ViscousTerm::explicit_) {
+    conflict(d, "incrementalPressure",
+             "the incremental projection needs the semi-implicit deviatoric term (viscousTerm implicit); with "
+             "viscousTerm explicit it is not used: remove one of the two");
+  }
+  if (!incremental && d.found("laggedPressure")) {
+    conflict(d, "laggedPressure",
+             "the lagged pressure is the incremental projection's (incrementalPressure granular or all); with "
+             "incrementalPressure none it is not used: remove it");
+  }
+  if (s.incrementalPressure == MaterialScope::all && s.pressureGradient == PressureGradientForm::symmetric) {
+    conflict(d, "pressureGradient",
+             "the incremental projection (incrementalPressure all) corrects with the renormalised gradient of the "
+             "increment; the symmetric form is not used: remove one of the two");
+  }
+  const Dictionary wf = d.subDictOrEmpty("wallFriction");
+  if (incremental && s.laggedForm == LaggedPressureForm::pairs && s.frictionNormal == FrictionNormal::hydrostatic) {
+    conflict(wf, "normalForce",
+             "with the incremental projection's pair form (laggedPressure { form pairs; }) the Coulomb capacity is "
+             "the wall pairs' normal reaction; normalForce hydrostatic is not used: remove it or use "
+             "laggedPressure { form gradient; }");
+  }
+}
+
+}  // namespace
+
+IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
+  IsphSchemes s;
+  s.method = d.getChoiceOrDefault("method", {"isph", "wcsph"}, "isph") == "wcsph" ? Method::wcsph : Method::isph;
+  readWeaklyCompressible(d, s);
+  s.kernel = d.getOrDefault("kernel", s.kernel);
+  s.hOverDx = d.getOrDefault("hOverDx", s.hOverDx);
+  requireRange(d, "hOverDx", s.hOverDx, 0.5, 4.0);
+  s.kernelCorrection = d.getOrDefault("kernelCorrection", s.kernelCorrection);
+  if (s.method == Method::isph) readPressurePoisson(d, s);
+  readFreeSurface(d, dimension, s);
+  s.tensionCutoff = d.getOrDefault("tensionCutoff", s.tensionCutoff);
+  readShifting(d, s);
+  readStepControls(d, s);
+  readViscousAndProjection(d, s);
+  readWallFriction(d, s);
+  checkConflicts(d, s);
   d.checkKeywords();
   return s;
 }
@@ -175,22 +249,29 @@ std::string IsphSchemes::describe() const {
   }
   out += fmt::format("    kernel {} with h = {} dx, gradient correction {}\n", kernel, hOverDx,
                      kernelCorrection ? "on" : "off");
-  out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,
-                     laplacianCorrection ? ", first-order correction where the support is cut" : "",
-                     toString(source));
-  if (source == PpeSource::mixed) out += fmt::format(" (alpha {})", alpha);
-  out += fmt::format("; next to the free surface and walls {} of the compression beyond the lattice density "
-                     "undone per step\n",
-                     boundaryRelaxation);
+  const bool projection = method == Method::isph;
+  if (projection) {
+    out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,
+                       laplacianCorrection ? ", first-order correction where the support is cut" : "",
+                       toString(source));
+    if (source == PpeSource::mixed) out += fmt::format(" (alpha {})", alpha);
+    out += fmt::format("; next to the free surface and walls {} of the compression beyond the lattice density "
+                       "undone per step\n",
+                       boundaryRelaxation);
+  }
   out += fmt::format("    free surface: div r < {}, or |grad C| h > {}, or fewer than {:.0f}% of a full "
                      "neighbourhood\n",
                      freeSurfaceThreshold, freeSurfaceGradient, 100 * minNeighbourFraction);
-  out += fmt::format("    compressed free-surface particles (kernel sum above the lattice's, away from walls): {}\n",
-                     compressedSurface == CompressedSurface::none ? "held at p = 0"
-                     : compressedSurface == CompressedSurface::all
-                         ? "unknowns of the PPE"
-                         : "unknowns of the PPE in granular materials, p = 0 in fluids");
-  out += fmt::format("    tension cut-off: {}\n", tensionCutoff ? "on, p >= 0 after the PPE solve" : "off");
+  if (projection) {
+    out += fmt::format("    compressed free-surface particles (kernel sum above the lattice's, away from walls): {}\n",
+                       compressedSurface == CompressedSurface::none ? "held at p = 0"
+                       : compressedSurface == CompressedSurface::all
+                           ? "unknowns of the PPE"
+                           : "unknowns of the PPE in granular materials, p = 0 in fluids");
+  }
+  out += fmt::format("    tension cut-off: {}\n", !tensionCutoff ? "off"
+                                                  : projection  ? "on, p >= 0 after the PPE solve"
+                                                                : "on, p >= 0 from the equation of state");
   if (shifting) {
     out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx; none at the free surface, "
                        "{} next to it\n",

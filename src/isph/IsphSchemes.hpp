@@ -11,7 +11,9 @@
 //                    δ of δ-SPH (0: off); artificialViscosity: Monaghan's α (0: off; with 0.01 the
 //                    tank at rest of hydrostaticTank was 2-3 times noisier). With wcsph the
 //                    deviatoric term is explicit and controlDict's maxCo is the acoustic Courant
-//                    number, dt ≤ maxCo h/(c0 + |u|max); the PPE and free-surface keywords are unused.
+//                    number, dt ≤ maxCo h/(c0 + |u|max); the projection's keywords (laplacian, source,
+//                    incrementalPressure, laggedPressure, pressureGradient) are not read: a warning names
+//                    each one given.
 //   kernel           WendlandC2;     // | cubicSpline
 //   hOverDx          1.3;
 //   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
@@ -57,6 +59,12 @@
 //                                    // hydrostatically (hydrostatic; WallFriction.hpp). With
 //                                    // incrementalPressure and laggedPressure pairs it is the
 //                                    // wall pairs' normal reaction whatever this says
+//
+// Settings that exclude each other are a fatal error at the entry that would be ignored:
+// incrementalPressure with viscousTerm explicit; laggedPressure with incrementalPressure none;
+// pressureGradient symmetric where the incremental projection acts (incrementalPressure all, or
+// granular in a scene with a granular material); wallFriction normalForce hydrostatic with
+// the incremental projection's pair form.
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -117,6 +125,7 @@ struct IsphSchemes {
   int frictionPasses = 10;
   FrictionNormal frictionNormal = FrictionNormal::wallPressure;
   PressureGradientForm pressureGradient = PressureGradientForm::renormalised;
+  SourceLocation pressureGradientAt;  // the entry, for the solver's check against the scene
 
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.
