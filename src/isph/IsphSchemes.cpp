@@ -219,9 +219,8 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   IsphSchemes s;
   s.method = d.getChoiceOrDefault("method", {"isph", "wcsph"}, "isph") == "wcsph" ? Method::wcsph : Method::isph;
   readWeaklyCompressible(d, s);
-  s.kernel = d.getOrDefault("kernel", s.kernel);
-  s.hOverDx = d.getOrDefault("hOverDx", s.hOverDx);
-  requireRange(d, "hOverDx", s.hOverDx, 0.5, 4.0);
+  d.markRead("kernel");  // (the kernel's: makeKernel, src/sph)
+  d.markRead("hOverDx");
   s.kernelCorrection = d.getOrDefault("kernelCorrection", s.kernelCorrection);
   if (s.method == Method::isph) readPressurePoisson(d, s);
   readFreeSurface(d, dimension, s);
@@ -247,8 +246,7 @@ std::string IsphSchemes::describe() const {
   } else {
     out += "    method: incompressible SPH, projection (Chorin; Eqs. 6-11)\n";
   }
-  out += fmt::format("    kernel {} with h = {} dx, gradient correction {}\n", kernel, hOverDx,
-                     kernelCorrection ? "on" : "off");
+  out += fmt::format("    kernel gradient correction {}\n", kernelCorrection ? "on" : "off");
   const bool projection = method == Method::isph;
   if (projection) {
     out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,

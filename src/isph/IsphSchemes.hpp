@@ -14,8 +14,8 @@
 //                    number, dt ≤ maxCo h/(c0 + |u|max); the projection's keywords (laplacian, source,
 //                    incrementalPressure, laggedPressure, pressureGradient) are not read: a warning names
 //                    each one given.
-//   kernel           WendlandC2;     // | cubicSpline
-//   hOverDx          1.3;
+//   kernel           WendlandC2;     // | cubicSpline: read by src/sph (makeKernel), as particleMesh
+//   hOverDx          1.3;            // and sampleForces read them
 //   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
 //   laplacian        { eta 0.1; correction on; }  // Shao & Lo Laplacian (Eq. 10), η = eta·h;
 //                    correction: consistent for linear fields where the support is cut
@@ -86,8 +86,6 @@ struct IsphSchemes {
   double densityDiffusion = 0.1;     // δ (wcsph)
   double artificialViscosity = 0.1;  // α (wcsph)
 
-  std::string kernel = "WendlandC2";
-  double hOverDx = 1.3;
   bool kernelCorrection = true;
   double correctionMinDeterminant = 0.25;  // fall back to the raw gradient below this
 

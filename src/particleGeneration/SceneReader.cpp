@@ -61,11 +61,7 @@ void readLattice(const Dictionary& dict, Scene& scene) {
 }
 
 void readWallLayers(const Dictionary& dict, const std::filesystem::path& caseDir, Scene& scene) {
-  const std::filesystem::path schemesFile = caseDir / "system" / "isphSchemes";
-  const Dictionary schemes = std::filesystem::exists(schemesFile)
-                                 ? Dictionary::readFile(schemesFile)
-                                 : Dictionary(schemesFile.string(), SourceLocation{});
-  const auto kernel = makeKernel(schemes, scene.spacing, scene.dimension);
+  const auto kernel = caseKernel(caseDir, scene.spacing, scene.dimension);
   const int needed = kernelWallLayers(kernel->supportRadius(), scene.spacing);
   const std::string why =
       fmt::format("kernel {} with h/dx = {:.4g}: support {:.4g} dx, ceil = {}", kernel->name(),

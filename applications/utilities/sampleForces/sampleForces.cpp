@@ -40,10 +40,7 @@ struct TimeState {
 
 // The kernel that carries τ to the walls: the solver's (system/isphSchemes) when the case has one.
 std::unique_ptr<isph::Kernel> kernelFor(const fs::path& casePath, const isph::CloudProperties& props) {
-  const fs::path schemes = casePath / "system" / "isphSchemes";
-  const isph::Dictionary dict =
-      fs::exists(schemes) ? isph::Dictionary::readFile(schemes) : isph::Dictionary("isphSchemes");
-  return isph::makeKernel(dict, props.spacing, props.dimension);
+  return isph::caseKernel(casePath, props.spacing, props.dimension);
 }
 
 void run(const isph::ArgList& args) {

@@ -64,11 +64,12 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   if (state_) info("    solver state (step {}) read from {}/uniform/isphState", state_->stepsTaken, time.timeName());
 
   info("\nReading system/isphSchemes");
-  schemes_ = IsphSchemes::read(Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes"), dim);
+  const Dictionary schemesDict = Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes");
+  kernel_ = makeKernel(schemesDict, ps_.cloud.properties.spacing, dim);
+  schemes_ = IsphSchemes::read(schemesDict, dim);
   materials_ = std::make_unique<MaterialTable>(time.path() / "constant" / "materialProperties",
                                                ps_.cloud.properties.materials);
   g_ = readGravity(time.path());
-  kernel_ = makeKernel(schemes_.kernel, schemes_.hOverDx * ps_.cloud.properties.spacing, dim);
   if (distributed_) {  // parallel: each rank's part, with the walls of its dummies
     if (schemes_.method == Method::wcsph) fatalError("method wcsph does not run in parallel (it runs on one rank)");
     distributed_->distribute(ps_.cloud, 2.0 * kernel_->supportRadius());
@@ -111,8 +112,9 @@ void ParticleSolver::finishConstruction() {
   const std::size_t nMaterial = sumOverRanks(ps_.ownMaterial()), nWall = sumOverRanks(ps_.ownWall()),
                     nDummy = sumOverRanks(ps_.ownDummy());  // parallel: all ranks'
   nMaterialAll_ = nMaterial;
-  info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, h = {} m", ps_.cloud.properties.dimension,
-       nMaterial + nWall + nDummy, nMaterial, nWall, nDummy, ps_.dx, kernel_->h());
+  info("    {}D, {} particles: {} material, {} wall, {} dummy; dx = {} m, kernel {} with h = {} m ({:.4g} dx)",
+       ps_.cloud.properties.dimension, nMaterial + nWall + nDummy, nMaterial, nWall, nDummy, ps_.dx, kernel_->name(),
+       kernel_->h(), kernel_->h() / ps_.dx);
   for (std::size_t i = 0; i < materials_->size(); ++i) info("    material {}", (*materials_)[i].describe());
   for (const auto& p : ps_.cloud.properties.patches) {
     info("    wall patch {}: no penetration ({}); fluids stick; granular material {}", p.name, wallCondition(),

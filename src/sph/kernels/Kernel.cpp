@@ -22,4 +22,10 @@ std::unique_ptr<Kernel> makeKernel(const Dictionary& schemes, double dx, int dim
   return makeKernel(name, hOverDx * dx, dimension, e ? e->location() : schemes.location());
 }
 
+std::unique_ptr<Kernel> caseKernel(const std::filesystem::path& caseDir, double dx, int dimension) {
+  const std::filesystem::path file = caseDir / "system" / "isphSchemes";
+  const Dictionary schemes = std::filesystem::exists(file) ? Dictionary::readFile(file) : Dictionary(file.string());
+  return makeKernel(schemes, dx, dimension);
+}
+
 }  // namespace isph

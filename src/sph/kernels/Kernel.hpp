@@ -1,6 +1,7 @@
 #pragma once
 // A smoothing kernel W(r, h) with compact support `supportFactor() * h`. Kernels are
 // chosen by name in system/isphSchemes (`kernel WendlandC2;`) from the kernel registry.
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -32,8 +33,11 @@ class Kernel {
 };
 
 // The kernel named in `schemes` (`kernel`, default WendlandC2) with h = hOverDx * dx
-// (`hOverDx`, default 1.3).
+// (`hOverDx`, default 1.3): the one reader of these two keywords of system/isphSchemes, for
+// the solver, particleMesh (the wall layers' depth) and sampleForces.
 std::unique_ptr<Kernel> makeKernel(const Dictionary& schemes, double dx, int dimension);
+// The same from <caseDir>/system/isphSchemes (the defaults when the case has none).
+std::unique_ptr<Kernel> caseKernel(const std::filesystem::path& caseDir, double dx, int dimension);
 
 // Kernel by name (FatalError listing the valid names for an unknown one).
 std::unique_ptr<Kernel> makeKernel(const std::string& name, double h, int dimension,

@@ -1,10 +1,13 @@
 // Kernels: unit integral (partition of unity), compact support, gradient consistent with W,
-// lattice neighbour counts quoted in the numerics note, selection by name.
+// lattice neighbour counts quoted in the numerics note, selection by name, the case's kernel.
 #include "sph/kernels/Kernel.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -98,6 +101,31 @@ TEST(KernelSelection, FromSchemesWithDefaultsAndErrors) {
     EXPECT_EQ(e.where().line, 2);
     EXPECT_NE(std::string(e.what()).find("WendlandC2"), std::string::npos) << e.what();
   }
+}
+
+// The case's kernel, as the solver, particleMesh and sampleForces all take it: from
+// system/isphSchemes, the defaults (Wendland C2, h = 1.3 dx) without one, and hOverDx outside
+// what SPH supports an error at its line.
+TEST(KernelSelection, TheCasesKernelIsThatOfItsIsphSchemes) {
+  const auto dir = std::filesystem::temp_directory_path() / ("isphCaseKernel-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "system");
+  const auto none = caseKernel(dir, 0.01, 2);
+  EXPECT_EQ(none->name(), "WendlandC2");
+  EXPECT_DOUBLE_EQ(none->h(), 0.013);
+  std::ofstream(dir / "system" / "isphSchemes") << "kernel cubicSpline;\nhOverDx 1.5;\n";
+  const auto given = caseKernel(dir, 0.02, 2);
+  EXPECT_EQ(given->name(), "cubicSpline");
+  EXPECT_DOUBLE_EQ(given->h(), 0.03);
+  std::ofstream(dir / "system" / "isphSchemes") << "kernel WendlandC2;\n\nhOverDx 5;\n";
+  try {
+    caseKernel(dir, 0.01, 2);
+    FAIL() << "expected a FatalError";
+  } catch (const FatalError& e) {
+    EXPECT_EQ(e.where().line, 3);
+    EXPECT_NE(std::string(e.what()).find("0.5 to 4"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
