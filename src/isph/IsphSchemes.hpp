@@ -82,7 +82,7 @@ enum class PressureGradientForm { renormalised, symmetric };  // the form of Eq.
 
 struct IsphSchemes {
   Method method = Method::isph;
-  double soundSpeed = 0;             // m/s (wcsph); 0: from the scene, set by the solver
+  double soundSpeed = 0;             // m/s (wcsph); 0: not given (the solver takes it from the scene)
   double densityDiffusion = 0.1;     // δ (wcsph)
   double artificialViscosity = 0.1;  // α (wcsph)
 
@@ -119,7 +119,7 @@ struct IsphSchemes {
   MaterialScope incrementalPressure = MaterialScope::none;
   LaggedPressureForm laggedForm = LaggedPressureForm::pairs;
   int laggedSmoothing = 0;  // Shepard passes over pⁿ (gradient form)
-  double frictionSlipSpeed = -1;  // m/s; < 0: 1e-4 sqrt(|g| dx), set by the solver
+  double frictionSlipSpeed = -1;  // m/s; < 0: not given (the solver takes 1e-4 sqrt(|g| dx))
   int frictionPasses = 10;
   FrictionNormal frictionNormal = FrictionNormal::wallPressure;
   PressureGradientForm pressureGradient = PressureGradientForm::renormalised;

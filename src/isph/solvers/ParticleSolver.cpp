@@ -79,8 +79,8 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   setSceneScales(state_ ? &state_->materialHeights : nullptr);
   viscousStress_ = std::make_unique<ViscousStress>(ps_, *materials_, correction_, schemes_.correctionMinDeterminant);
 
-  if (schemes_.frictionSlipSpeed < 0) schemes_.frictionSlipSpeed = 1e-4 * std::sqrt(g_.norm() * ps_.dx);
-  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, schemes_.frictionSlipSpeed, schemes_.frictionNormal);
+  frictionSlipSpeed_ = schemes_.frictionSlipSpeed > 0 ? schemes_.frictionSlipSpeed : 1e-4 * std::sqrt(g_.norm() * ps_.dx);
+  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, frictionSlipSpeed_, schemes_.frictionNormal);
   if (friction_->active()) wallFriction_.assign(ps_.size(), Vec3::Zero());  // (none before the first step)
   markFrictionWalls(ps_);
   // A case from particleMesh has no wall pressures yet (a restart has them).
@@ -120,7 +120,7 @@ void ParticleSolver::finishConstruction() {
     info("    wall patch {}: no penetration ({}); fluids stick; granular material {}", p.name, wallCondition(),
          p.frictionAngle > 0 && friction_->active()
              ? fmt::format("slides with Coulomb friction, angle {} deg (tan = {:.4g}), sticking below {:.3g} m/s",
-                           p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), schemes_.frictionSlipSpeed)
+                           p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), frictionSlipSpeed_)
              : "slides freely (no friction angle)");
   }
   info("    gravity ({} {} {}) m/s^2", g_.x(), g_.y(), g_.z());

@@ -129,6 +129,7 @@ class ParticleSolver {
   std::unique_ptr<FreeSurfaceDetector> freeSurface_;
   std::unique_ptr<WallFriction> friction_;
   std::vector<Vec3> wallFriction_;  // per particle: the walls' friction traction [Pa]
+  double frictionSlipSpeed_ = 0;    // [m/s] Coulomb walls stick below it (given, or 1e-4 sqrt(|g| dx))
   std::unique_ptr<ViscousStress> viscousStress_;
   std::vector<Vec3> ustar_;  // the step's intermediate velocity u* (Eq. 6)
   bool freshStart_ = false;  // started from particleMesh's fields (no wall pressures)

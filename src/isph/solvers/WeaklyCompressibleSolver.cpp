@@ -24,14 +24,19 @@ WeaklyCompressibleSolver::WeaklyCompressibleSolver(const Time& time, bool parall
   }
   const auto [elasticSound, elasticWave] = elasticPlasticSpeeds(*materials_, Method::wcsph);
   waveSpeed_ = elasticWave;
-  if (schemes_.soundSpeed <= 0 && state_ && state_->soundSpeed > 0) schemes_.soundSpeed = state_->soundSpeed;
-  if (schemes_.soundSpeed <= 0 && elasticSound > 0) schemes_.soundSpeed = elasticSound;  // p = K (ρ − ρ0)/ρ0
-  if (schemes_.soundSpeed <= 0) schemes_.soundSpeed = defaultSoundSpeed(ps_, g_);
-  if (!(schemes_.soundSpeed > 0)) {
+  // c0: given, else a restart's (the first start's scene), else the elastic bulk speed
+  // (p = K (ρ − ρ0)/ρ0), else from the scene's height.
+  double c0 = schemes_.soundSpeed;
+  std::string origin = "system/isphSchemes";
+  if (c0 <= 0 && state_ && state_->soundSpeed > 0) c0 = state_->soundSpeed, origin = "the solver state";
+  if (c0 <= 0 && elasticSound > 0) c0 = elasticSound, origin = "sqrt(K/rho) of the elastic-plastic material";
+  if (c0 <= 0) c0 = defaultSoundSpeed(ps_, g_), origin = "10 sqrt(2 |g| H), H the scene's height";
+  if (!(c0 > 0)) {
     fatalError("method wcsph: a scene at rest without gravity has no speed scale for the default sound speed; "
                "give one in system/isphSchemes, e.g. wcsph { soundSpeed 20; }");
   }
-  wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_, schemes_.soundSpeed);
+  info("    sound speed c0 = {:.4g} m/s ({})", c0, origin);
+  wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_, c0);
   if (freshStart_) {  // the walls' densities from the hydrostatic extrapolation of the material's pressure
     ps_.neighbours.build(ps_.cloud.positions, *kernel_);
     prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
