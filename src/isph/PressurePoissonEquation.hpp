@@ -26,7 +26,7 @@
 // particles hold p = 0 (Dirichlet: an identity row each, eliminated from their neighbours'
 // rows, so that the matrix has one row per material particle at every step), except, for the materials in keepCompressed
 // (granular ones by default: `freeSurface { compressed granular; }`), flagged particles away
-// from walls whose kernel sum exceeds θ0: a compressed particle is no opening to the outside
+// from walls whose kernel sum exceeds θ0 (PpeDirichletParticles.hpp): a compressed particle is no opening to the outside
 // but a clump at the surface, which p = 0 could not push apart (numerics.md §2: p = 0 inside a
 // granular front takes its strength). For fluids it stays p = 0: at the dam break's front it
 // raised the front speed from +5 % to +12 % against the experiment. Wall and dummy particles are not unknowns:
