@@ -52,10 +52,8 @@ Vec3 laggedPressureForce(const ParticleSystem& ps, const Kernel& kernel, const s
     const Vec3 rba = xb - c.positions[a];
     const double r = rba.norm();
     if (r <= 0 || r >= kernel.supportRadius()) continue;
-    const double rn = rba.dot(n);
-    const Vec3 G = ps.frictionWall[b] ? ps.wallTangentialGradient[a] : Vec3(ps.rho[a] * g);
-    const double pb = c.p[a] + std::max(ps.rho[a] * ustar[a].dot(n) / dt * rn, -ps.wallPullLimit[a]) +
-                      G.dot(rba - rn * n);
+    const WallPressureParts parts = wallPressureParts(ps, ustar, g, a, b, rba, dt);
+    const double pb = c.p[a] + parts.normal + parts.tangential;
     // A wall pushes along its normal only: the tangential traction is the friction's.
     const Vec3 f = mb * (qa + pb / (ps.rho[b] * ps.rho[b])) * kernel.dWdr(r) / r * rba;
     const Vec3 fn = f.dot(n) * n;
