@@ -221,8 +221,7 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
     // front is also what launches the tensile instability.
     if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
   }
-  exchangeGhosts(ps, p);  // parallel: the wall pressure reads it at ghosts
-  updateWallPressure(ps, ustar, g, dt);
+  exchangeGhosts(ps, p);  // parallel: the walls' pressures (WallBoundary::update) read it at ghosts
   return perf;
 }
 

@@ -49,7 +49,8 @@ class PressurePoissonEquation {
   PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver,
                           std::vector<char> keepCompressed = {});
 
-  // Assemble and solve; writes p into ps.cloud.p for all particles (warm start from it).
+  // Assemble and solve; writes p into ps.cloud.p for the material particles (warm start from
+  // it); the walls' pressures follow from them (WallBoundary::update).
   // `ustar` is the intermediate velocity, `freeSurface` the flags of the FreeSurfaceDetector.
   SolverPerformance solve(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
                           const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);

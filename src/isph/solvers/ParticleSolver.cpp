@@ -9,11 +9,9 @@
 #include "core/Log.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "isph/Gravity.hpp"
-#include "isph/MaterialGradient.hpp"
 #include "isph/ParticleCollision.hpp"
 #include "isph/ParticleShifting.hpp"
 #include "isph/StartupChecks.hpp"
-#include "isph/WallBoundaryPressure.hpp"
 #include "isph/WallPenetrationGuard.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 #include "isph/parallel/StepStateOverRanks.hpp"
@@ -79,8 +77,11 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   setSceneScales(state_ ? &state_->materialHeights : nullptr);
   viscousStress_ = std::make_unique<ViscousStress>(ps_, *materials_, correction_, schemes_.correctionMinDeterminant);
 
-  frictionSlipSpeed_ = schemes_.frictionSlipSpeed > 0 ? schemes_.frictionSlipSpeed : 1e-4 * std::sqrt(g_.norm() * ps_.dx);
-  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, frictionSlipSpeed_, schemes_.frictionNormal);
+  const double slipSpeed =
+      schemes_.frictionSlipSpeed > 0 ? schemes_.frictionSlipSpeed : 1e-4 * std::sqrt(g_.norm() * ps_.dx);
+  friction_ = std::make_unique<WallFriction>(ps_, *materials_, g_, slipSpeed, schemes_.frictionNormal);
+  walls_ = std::make_unique<WallBoundary>(ps_, *materials_, g_, schemes_.correctionMinDeterminant,
+                                          friction_->slidingMaterial());
   if (friction_->active()) wallFriction_.assign(ps_.size(), Vec3::Zero());  // (none before the first step)
   markFrictionWalls(ps_);
   // A case from particleMesh has no wall pressures yet (a restart has them).
@@ -120,7 +121,7 @@ void ParticleSolver::finishConstruction() {
     info("    wall patch {}: no penetration ({}); fluids stick; granular material {}", p.name, wallCondition(),
          p.frictionAngle > 0 && friction_->active()
              ? fmt::format("slides with Coulomb friction, angle {} deg (tan = {:.4g}), sticking below {:.3g} m/s",
-                           p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), frictionSlipSpeed_)
+                           p.frictionAngle, std::tan(p.frictionAngle * std::numbers::pi / 180.0), friction_->slipSpeed())
              : "slides freely (no friction angle)");
   }
   info("    gravity ({} {} {}) m/s^2", g_.x(), g_.y(), g_.z());
@@ -162,23 +163,6 @@ void ParticleSolver::setSceneScales(const std::vector<double>* heights) {
   }
 }
 
-void ParticleSolver::prepareWallPressure(const std::vector<char>& surface) {
-  ps_.wallPullLimit.assign(ps_.size(), 0.0);
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
-    ps_.wallPullLimit[a] = surface[a] ? 0.0 : std::max(ps_.cloud.p[a], 0.0);
-  }
-  ps_.wallTangentialGradient.assign(ps_.nMaterial, Vec3::Zero());
-  const std::vector<Vec3> gradP = friction_->slidingMaterial()
-                                      ? materialPressureGradient(ps_, schemes_.correctionMinDeterminant)
-                                      : std::vector<Vec3>();
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
-    const bool slides = (*materials_)[static_cast<std::size_t>(ps_.cloud.material[a])].wallContact() ==
-                        WallContact::coulombFriction;
-    ps_.wallTangentialGradient[a] = slides ? gradP[a] : Vec3(ps_.rho[a] * g_);
-  }
-  exchangeGhosts(ps_, ps_.wallTangentialGradient);  // parallel: the wall pressure reads it at ghosts
-}
-
 void ParticleSolver::initialiseWallPressure() {
   // A case from particleMesh has no wall pressures yet (a restart has them): the walls take
   // the pressure of material at rest against them, so that the first step has wall friction.
@@ -187,11 +171,9 @@ void ParticleSolver::initialiseWallPressure() {
                                                   [](double v) { return v != 0.0; }))) {  // parallel: all ranks
     return;
   }
-  ps_.neighbours.build(ps_.cloud.positions, *kernel_);
-  prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
   std::vector<Vec3> atRest(ps_.size(), Vec3::Zero());
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) atRest[a] = ps_.cloud.U[a] + g_;  // u* = u + g dt, dt = 1
-  updateWallPressure(ps_, atRest, g_, 1.0);
+  walls_->settle(*kernel_, atRest);
 }
 
 void ParticleSolver::applyExplicitFriction(double dt) {

@@ -32,6 +32,7 @@
 #include "isph/StepState.hpp"
 #include "isph/TimeStepControl.hpp"
 #include "isph/ViscousStress.hpp"
+#include "isph/WallBoundary.hpp"
 #include "isph/WallFriction.hpp"
 #include "isph/parallel/DistributedParticles.hpp"
 
@@ -108,8 +109,6 @@ class ParticleSolver {
     return inWrittenOrder(readField<T>(file, writtenIds_.size()));
   }
 
-  // The walls' pull limits and tangential pressure gradients that WallBoundaryPressure uses.
-  void prepareWallPressure(const std::vector<char>& freeSurface);
   // The explicit Coulomb friction on u* and the walls' share of it (wallFriction_).
   void applyExplicitFriction(double dt);
   // Whether this step reorders the material particles along cells (every reorderInterval-th).
@@ -128,8 +127,8 @@ class ParticleSolver {
   KernelGradientCorrection correction_;
   std::unique_ptr<FreeSurfaceDetector> freeSurface_;
   std::unique_ptr<WallFriction> friction_;
+  std::unique_ptr<WallBoundary> walls_;  // the walls' pressures and what they are computed from
   std::vector<Vec3> wallFriction_;  // per particle: the walls' friction traction [Pa]
-  double frictionSlipSpeed_ = 0;    // [m/s] Coulomb walls stick below it (given, or 1e-4 sqrt(|g| dx))
   std::unique_ptr<ViscousStress> viscousStress_;
   std::vector<Vec3> ustar_;  // the step's intermediate velocity u* (Eq. 6)
   bool freshStart_ = false;  // started from particleMesh's fields (no wall pressures)

@@ -8,7 +8,6 @@
 #include "isph/IntermediateVelocity.hpp"
 #include "isph/LaggedPressure.hpp"
 #include "isph/VelocityCorrection.hpp"
-#include "isph/WallBoundaryPressure.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {
@@ -155,7 +154,7 @@ void ProjectionSolver::correctAndMove(double dt) {
     exchangeGhosts(ps_, ps_.cloud.U);  // parallel
     std::vector<Vec3> ustarTotal(ustar_);  // the walls' pressure from the whole condition
     for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustarTotal[a] -= dt * lagged_[a];
-    updateWallPressure(ps_, ustarTotal, g_, dt);
+    walls_->update(ustarTotal, dt);
   } else {
     correctVelocity(ps_, correction_, ustar_, g_, dt,
                     schemes_.pressureGradient == PressureGradientForm::symmetric ? kernel_.get() : nullptr);
@@ -192,7 +191,7 @@ StepReport ProjectionSolver::step(const Time& time) {
     correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
     freeSurface_->detect(ps_);
     report.freeSurface = freeSurface_->nSurfaceMaterial();
-    prepareWallPressure(freeSurface_->flags());
+    walls_->prepare(freeSurface_->flags());
   }
   intermediateVelocity(time, report);  // Eq. 6
   if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
@@ -212,6 +211,7 @@ StepReport ProjectionSolver::step(const Time& time) {
     ps_.cloud.p = pStart_;
     return report;
   }
+  if (lagged_.empty()) walls_->update(ustar_, dt);  // the walls' pressures of the step (p^{n+1})
   auto t = timer_.scope("velocity correction and shifting");
   correctAndMove(dt);  // Eq. 11
   finishStep(time, report);

@@ -6,7 +6,6 @@
 
 #include "core/Log.hpp"
 #include "isph/IntermediateVelocity.hpp"
-#include "isph/WallBoundaryPressure.hpp"
 
 namespace isph {
 
@@ -38,10 +37,7 @@ WeaklyCompressibleSolver::WeaklyCompressibleSolver(const Time& time, bool parall
   info("    sound speed c0 = {:.4g} m/s ({})", c0, origin);
   wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_, c0);
   if (freshStart_) {  // the walls' densities from the hydrostatic extrapolation of the material's pressure
-    ps_.neighbours.build(ps_.cloud.positions, *kernel_);
-    prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
-    std::vector<Vec3> atRest(ps_.nMaterial, g_);  // u* = g dt with dt = 1
-    updateWallPressure(ps_, atRest, g_, 1.0);
+    walls_->settle(*kernel_, std::vector<Vec3>(ps_.nMaterial, g_));  // u* = g dt with dt = 1
   }
   if (const auto density = readStartField<scalar>("rho"); !density.empty()) {  // a restart of a wcsph run
     wcsph_->setDensity(density);
@@ -126,9 +122,8 @@ void WeaklyCompressibleSolver::advance(const Time& time, StepReport& report) {
   const double h = kernel_->h();
   {  // the walls' pressures for the force routine and the friction: the material's (pⁿ, set from
      // ρⁿ at the end of the last step, or read), extrapolated
-    prepareWallPressure(std::vector<char>(ps_.nMaterial, 0));
-    const std::vector<Vec3> atRest(ps_.nMaterial, Vec3(dt * g_));
-    updateWallPressure(ps_, atRest, g_, dt);
+    walls_->prepare(std::vector<char>(ps_.nMaterial, 0));
+    walls_->update(std::vector<Vec3>(ps_.nMaterial, Vec3(dt * g_)), dt);
   }
   const std::vector<double> rate = wcsph_->densityRate(ps_, *kernel_, g_, h);
   // g and the explicit deviatoric term (Eq. 6 as written; elasticPlastic: its stress, below),
