@@ -31,13 +31,13 @@ void readWeaklyCompressible(const Dictionary& d, IsphSchemes& s) {
   const Dictionary wc = d.subDictOrEmpty("wcsph");
   if (s.method == Method::wcsph) {
     if (wc.found("soundSpeed")) {  // else from the scene (the solver logs the value)
-      s.soundSpeed = wc.get<double>("soundSpeed");
-      requireRange(wc, "soundSpeed", s.soundSpeed, 1e-6, 1e6);
+      s.wcsph.soundSpeed = wc.get<double>("soundSpeed");
+      requireRange(wc, "soundSpeed", s.wcsph.soundSpeed, 1e-6, 1e6);
     }
-    s.densityDiffusion = wc.getOrDefault("densityDiffusion", s.densityDiffusion);
-    requireRange(wc, "densityDiffusion", s.densityDiffusion, 0.0, 1.0);
-    s.artificialViscosity = wc.getOrDefault("artificialViscosity", s.artificialViscosity);
-    requireRange(wc, "artificialViscosity", s.artificialViscosity, 0.0, 10.0);
+    s.wcsph.densityDiffusion = wc.getOrDefault("densityDiffusion", s.wcsph.densityDiffusion);
+    requireRange(wc, "densityDiffusion", s.wcsph.densityDiffusion, 0.0, 1.0);
+    s.wcsph.artificialViscosity = wc.getOrDefault("artificialViscosity", s.wcsph.artificialViscosity);
+    requireRange(wc, "artificialViscosity", s.wcsph.artificialViscosity, 0.0, 10.0);
   }
   wc.checkKeywords({"soundSpeed", "densityDiffusion", "artificialViscosity"});
 }
@@ -45,23 +45,23 @@ void readWeaklyCompressible(const Dictionary& d, IsphSchemes& s) {
 // The PPE's Laplacian and source (the projection only).
 void readPressurePoisson(const Dictionary& d, IsphSchemes& s) {
   const Dictionary lap = d.subDictOrEmpty("laplacian");
-  s.laplacianEta = lap.getOrDefault("eta", s.laplacianEta);
-  requireRange(lap, "eta", s.laplacianEta, 1e-6, 1.0);
-  s.laplacianCorrection = lap.getOrDefault("correction", s.laplacianCorrection);
+  s.ppe.laplacianEta = lap.getOrDefault("eta", s.ppe.laplacianEta);
+  requireRange(lap, "eta", s.ppe.laplacianEta, 1e-6, 1.0);
+  s.ppe.laplacianCorrection = lap.getOrDefault("correction", s.ppe.laplacianCorrection);
   lap.checkKeywords();
 
   const Dictionary src = d.subDictOrEmpty("source");
   const std::string type =
       src.getChoiceOrDefault("type", {"densityInvariant", "divergence", "mixed"}, "densityInvariant");
-  s.source = type == "divergence" ? PpeSource::divergence
+  s.ppe.source = type == "divergence" ? PpeSource::divergence
              : type == "mixed"    ? PpeSource::mixed
                                   : PpeSource::densityInvariant;
-  if (s.source == PpeSource::mixed) {
-    s.alpha = src.getOrDefault("alpha", s.alpha);
-    requireRange(src, "alpha", s.alpha, 0.0, 1.0);
+  if (s.ppe.source == PpeSource::mixed) {
+    s.ppe.alpha = src.getOrDefault("alpha", s.ppe.alpha);
+    requireRange(src, "alpha", s.ppe.alpha, 0.0, 1.0);
   }
-  s.boundaryRelaxation = src.getOrDefault("relaxation", s.boundaryRelaxation);
-  requireRange(src, "relaxation", s.boundaryRelaxation, 0.0, 1.0);
+  s.ppe.boundaryRelaxation = src.getOrDefault("relaxation", s.ppe.boundaryRelaxation);
+  requireRange(src, "relaxation", s.ppe.boundaryRelaxation, 0.0, 1.0);
   src.checkKeywords({"alpha"});
 }
 
@@ -82,13 +82,13 @@ void readFreeSurface(const Dictionary& d, int dimension, IsphSchemes& s) {
 
 void readShifting(const Dictionary& d, IsphSchemes& s) {
   const Dictionary sh = d.subDictOrEmpty("shifting");
-  s.shifting = sh.getOrDefault("enabled", s.shifting);
-  if (s.shifting) {
-    s.shiftingCoefficient = sh.getOrDefault("coefficient", s.shiftingCoefficient);
-    requireRange(sh, "coefficient", s.shiftingCoefficient, 0.0, 20.0);
-    s.maxShift = sh.getOrDefault("maxShift", s.maxShift);
-    requireRange(sh, "maxShift", s.maxShift, 0.0, 1.0);
-    s.shiftPairsNearSurface = sh.getChoiceOrDefault("nearSurface", {"none", "pairs"}, "none") == "pairs";
+  s.shifting.enabled = sh.getOrDefault("enabled", s.shifting.enabled);
+  if (s.shifting.enabled) {
+    s.shifting.coefficient = sh.getOrDefault("coefficient", s.shifting.coefficient);
+    requireRange(sh, "coefficient", s.shifting.coefficient, 0.0, 20.0);
+    s.shifting.maxShift = sh.getOrDefault("maxShift", s.shifting.maxShift);
+    requireRange(sh, "maxShift", s.shifting.maxShift, 0.0, 1.0);
+    s.shifting.pairsNearSurface = sh.getChoiceOrDefault("nearSurface", {"none", "pairs"}, "none") == "pairs";
   }
   sh.checkKeywords({"coefficient", "maxShift", "nearSurface"});
 }
@@ -240,22 +240,22 @@ std::string IsphSchemes::describe() const {
     out += fmt::format("    method: weakly-compressible SPH, explicit (linear equation of state, sound speed {}; "
                        "delta-SPH density diffusion {}; Monaghan artificial viscosity alpha {}); acoustic Courant "
                        "limit\n",
-                       soundSpeed > 0 ? fmt::format("{:.4g} m/s", soundSpeed) : std::string("from the scene"),
-                       densityDiffusion > 0 ? fmt::format("delta = {}", densityDiffusion) : std::string("off"),
-                       artificialViscosity);
+                       wcsph.soundSpeed > 0 ? fmt::format("{:.4g} m/s", wcsph.soundSpeed) : std::string("from the scene"),
+                       wcsph.densityDiffusion > 0 ? fmt::format("delta = {}", wcsph.densityDiffusion) : std::string("off"),
+                       wcsph.artificialViscosity);
   } else {
     out += "    method: incompressible SPH, projection (Chorin; Eqs. 6-11)\n";
   }
   out += fmt::format("    kernel gradient correction {}\n", kernelCorrection ? "on" : "off");
   const bool projection = method == Method::isph;
   if (projection) {
-    out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", laplacianEta,
-                       laplacianCorrection ? ", first-order correction where the support is cut" : "",
-                       toString(source));
-    if (source == PpeSource::mixed) out += fmt::format(" (alpha {})", alpha);
+    out += fmt::format("    PPE: Shao-Lo Laplacian (eta {} h{}), source {}", ppe.laplacianEta,
+                       ppe.laplacianCorrection ? ", first-order correction where the support is cut" : "",
+                       toString(ppe.source));
+    if (ppe.source == PpeSource::mixed) out += fmt::format(" (alpha {})", ppe.alpha);
     out += fmt::format("; next to the free surface and walls {} of the compression beyond the lattice density "
                        "undone per step\n",
-                       boundaryRelaxation);
+                       ppe.boundaryRelaxation);
   }
   out += fmt::format("    free surface: div r < {}, or |grad C| h > {}, or fewer than {:.0f}% of a full "
                      "neighbourhood\n",
@@ -270,10 +270,10 @@ std::string IsphSchemes::describe() const {
   out += fmt::format("    tension cut-off: {}\n", !tensionCutoff ? "off"
                                                   : projection  ? "on, p >= 0 after the PPE solve"
                                                                 : "on, p >= 0 from the equation of state");
-  if (shifting) {
+  if (shifting.enabled) {
     out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx; none at the free surface, "
                        "{} next to it\n",
-                       shiftingCoefficient, maxShift, shiftPairsNearSurface ? "the pair term alone" : "none");
+                       shifting.coefficient, shifting.maxShift, shifting.pairsNearSurface ? "the pair term alone" : "none");
   } else {
     out += "    particle shifting: off\n";
   }

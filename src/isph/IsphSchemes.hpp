@@ -80,33 +80,47 @@ enum class LaggedPressureForm { pairs, gradient };
 enum class FrictionNormal { wallPressure, hydrostatic };       // the wall stress the Coulomb capacity is tan δ times
 enum class PressureGradientForm { renormalised, symmetric };  // the form of Eq. 11
 
+// The weakly-compressible method's own settings (WeaklyCompressibleStep), `wcsph { }`.
+struct WcsphSettings {
+  double soundSpeed = 0;             // m/s; 0: not given (the solver takes it from the scene)
+  double densityDiffusion = 0.1;     // δ
+  double artificialViscosity = 0.1;  // α
+};
+
+// The PPE's settings (PressurePoissonEquation): `laplacian { }` and `source { }`.
+struct PpeSettings {
+  double laplacianEta = 0.1;  // η/h in r² + η²
+  bool laplacianCorrection = true;  // first-order consistent Laplacian where the support is cut
+  PpeSource source = PpeSource::densityInvariant;
+  double alpha = 0.05;  // weight of the density term in the mixed source
+  double boundaryRelaxation = 0.1;  // compression undone per step next to the surface and walls
+};
+
+// The particle shifting's settings (ParticleShifting), `shifting { }`.
+struct ShiftingSettings {
+  bool enabled = true;
+  double coefficient = 2.0;  // A in D = A h |u| dt
+  double maxShift = 0.2;     // in dx
+  bool pairsNearSurface = false;  // shifting { nearSurface pairs; }
+};
+
 struct IsphSchemes {
   Method method = Method::isph;
-  double soundSpeed = 0;             // m/s (wcsph); 0: not given (the solver takes it from the scene)
-  double densityDiffusion = 0.1;     // δ (wcsph)
-  double artificialViscosity = 0.1;  // α (wcsph)
+  WcsphSettings wcsph;
 
   bool kernelCorrection = true;
   double correctionMinDeterminant = 0.25;  // fall back to the raw gradient below this
 
-  double laplacianEta = 0.1;  // η/h in r² + η²
-  bool laplacianCorrection = true;  // first-order consistent Laplacian where the support is cut
-
-  PpeSource source = PpeSource::densityInvariant;
-  double alpha = 0.05;  // weight of the density term in the mixed source
-  double boundaryRelaxation = 0.1;  // compression undone per step next to the surface and walls
+  PpeSettings ppe;
 
   double freeSurfaceThreshold = 1.5;         // ∇·r below this flags the free surface
   double freeSurfaceGradient = 0.05;         // |∇C| h above this makes a candidate for the scan
   double minNeighbourFraction = 0.5;         // fewer neighbours than this share of a full lattice: surface
   CompressedSurface compressedSurface = CompressedSurface::granular;
 
-  bool tensionCutoff = true;  // p ← max(p, 0) after the PPE solve
+  bool tensionCutoff = true;  // p ← max(p, 0) (after the PPE solve; the WCSPH equation of state)
 
-  bool shifting = true;
-  double shiftingCoefficient = 2.0;  // A in D = A h |u| dt
-  double maxShift = 0.2;             // in dx
-  bool shiftPairsNearSurface = false;  // shifting { nearSurface pairs; }
+  ShiftingSettings shifting;
 
   double forceFactor = 0.25;     // dt ≤ C_f √(h/|f|)
   double viscousFactor = 0.125;  // dt ≤ C_ν ρ h²/η

@@ -9,12 +9,14 @@
 
 namespace isph {
 
-ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const std::vector<char>& freeSurface, const IsphSchemes& schemes, double dt) {
+ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const std::vector<char>& freeSurface,
+                              const ShiftingSettings& settings, double correctionMinDeterminant, bool tensionCutoff,
+                              double dt) {
   auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const long n = static_cast<long>(ps.nMaterial);
   const double Wdx = kernel.W(ps.dx);
-  const double maxShift = schemes.maxShift * ps.dx;
+  const double maxShift = settings.maxShift * ps.dx;
   std::vector<Vec3> shift(ps.nMaterial, Vec3::Zero());
   double largest = 0;
   long capped = 0;
@@ -36,7 +38,7 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
       const auto b = static_cast<std::size_t>(nl.index[kk]);
       const double ratio = nl.W[kk] / Wdx;
       gradC += ps.volume[b] * (1.0 + 0.2 * ratio * ratio * ratio * ratio) * nl.F[kk] * (c.positions[ua] - c.positions[b]);
-      if (schemes.shiftPairsNearSurface && ratio > 1.0 && ps.isMaterial(b)) {
+      if (settings.pairsNearSurface && ratio > 1.0 && ps.isMaterial(b)) {
         gradPair += ps.volume[b] * 0.2 * (ratio * ratio * ratio * ratio - 1.0) * nl.F[kk] * (c.positions[ua] - c.positions[b]);
       }
       nearSurface = nearSurface || (ps.isMaterial(b) && freeSurface[b]);
@@ -45,9 +47,9 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
         wall = b;
       }
     }
-    const double D = schemes.shiftingCoefficient * kernel.h() * speed * dt;
+    const double D = settings.coefficient * kernel.h() * speed * dt;
     Vec3 dr = -D * gradC;
-    if (nearSurface && schemes.shiftPairsNearSurface) {
+    if (nearSurface && settings.pairsNearSurface) {
       dr = -D * gradPair;
     } else if (nearSurface && gradC.squaredNorm() > 0) {  // removes all of it (see the header)
       const Vec3 normal = -gradC.normalized();
@@ -79,7 +81,7 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
     if (shift[ua].squaredNorm() == 0) continue;
-    const Eigen::Matrix3d Minv = materialMomentInverse(ps, ua, schemes.correctionMinDeterminant);
+    const Eigen::Matrix3d Minv = materialMomentInverse(ps, ua, correctionMinDeterminant);
     Eigen::Matrix3d gradU = Eigen::Matrix3d::Zero();  // (∇u)_ij = ∂u_i/∂x_j
     Vec3 gradP = Vec3::Zero();
     for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
@@ -95,7 +97,7 @@ ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const st
     // The tension cut-off holds after the shift too: next to a pressure spike the Taylor term
     // alone gave p = −54 kPa (20× the column's lithostatic pressure) and the lagged pressure
     // gradient of the wall friction then blew the 2 mm column collapse up.
-    if (schemes.tensionCutoff) pnew[ua] = std::max(pnew[ua], 0.0);
+    if (tensionCutoff) pnew[ua] = std::max(pnew[ua], 0.0);
   }
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);

@@ -35,6 +35,8 @@ struct ShiftingResult {
   std::size_t capped = 0;
 };
 
-ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const std::vector<char>& freeSurface, const IsphSchemes& schemes, double dt);
+ShiftingResult shiftParticles(ParticleSystem& ps, const Kernel& kernel, const std::vector<char>& freeSurface,
+                              const ShiftingSettings& settings, double correctionMinDeterminant, bool tensionCutoff,
+                              double dt);
 
 }  // namespace isph

@@ -13,9 +13,12 @@
 
 namespace isph {
 
-PressurePoissonEquation::PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver,
-                                                 std::vector<char> keepCompressed)
-    : schemes_(schemes), solver_(std::move(solver)), keepCompressed_(std::move(keepCompressed)) {}
+PressurePoissonEquation::PressurePoissonEquation(const PpeSettings& settings, bool tensionCutoff,
+                                                 std::unique_ptr<LinearSolver> solver, std::vector<char> keepCompressed)
+    : settings_(settings),
+      tensionCutoff_(tensionCutoff),
+      solver_(std::move(solver)),
+      keepCompressed_(std::move(keepCompressed)) {}
 
 
 void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& kernel,
@@ -28,7 +31,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   const std::vector<char> flags = ppeDirichletParticles(ps, kernel, freeSurfaceIn, keepCompressed_);
   const double W0 = kernel.W(0.0);
   const double halfDx = 0.5 * ps.dx;
-  const double relaxation = schemes_.boundaryRelaxation;
+  const double relaxation = settings_.boundaryRelaxation;
 
   // One row per material particle, in the particles' order, whether or not it is an unknown:
   // the Dirichlet ones are identity rows with their known value (decoupled: the unknowns next
@@ -59,10 +62,10 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
   system_.rhs.resize(static_cast<std::size_t>(nRows));
 
   const double h = kernel.h();
-  const double eta2 = schemes_.laplacianEta * schemes_.laplacianEta * h * h;
+  const double eta2 = settings_.laplacianEta * settings_.laplacianEta * h * h;
   const double theta0 = ps.latticeSum;
-  const PpeSource type = schemes_.source;
-  const bool consistent = schemes_.laplacianCorrection;
+  const PpeSource type = settings_.source;
+  const bool consistent = settings_.laplacianCorrection;
   system_.symmetricHint = !consistent;
   // Each source needs only its own sums: θ* (a kernel value per pair) for the density-invariant
   // one, the divergence of u* for the others.
@@ -174,7 +177,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
           source = divergence / dt;
           break;
         case PpeSource::mixed:
-          source = divergence / dt + schemes_.alpha * (thetaRef - thetaN) / (thetaRef * dt * dt);
+          source = divergence / dt + settings_.alpha * (thetaRef - thetaN) / (thetaRef * dt * dt);
           break;
       }
       // A = −(Eq. 10 × m_a): A p = −m_a S_a − Σ_wall C_ab δ_ab
@@ -219,7 +222,7 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
     p[a] = dirichlet_[a] ? 0.0 : x[a];
     // Neither soil nor a breaking water front carries tension; SPH suction at a stretching
     // front is also what launches the tensile instability.
-    if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
+    if (tensionCutoff_) p[a] = std::max(p[a], 0.0);
   }
   exchangeGhosts(ps, p);  // parallel: the walls' pressures (WallBoundary::update) read it at ghosts
   return perf;
@@ -245,7 +248,7 @@ SolverPerformance PressurePoissonEquation::solveIncrement(ParticleSystem& ps, co
   increment.assign(ps.nMaterial, 0.0);
   for (std::size_t a = 0; a < nRows; ++a) {
     p[a] = dirichlet_[a] ? 0.0 : base[a] + x[a];
-    if (schemes_.tensionCutoff) p[a] = std::max(p[a], 0.0);
+    if (tensionCutoff_) p[a] = std::max(p[a], 0.0);
     increment[a] = p[a] - base[a];
   }
   exchangeGhosts(ps, p);  // parallel: Eq. 11 reads both at ghosts

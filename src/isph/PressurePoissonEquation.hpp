@@ -46,7 +46,8 @@ class PressurePoissonEquation {
  public:
   // `keepCompressed[m]`: flagged particles of material m that are compressed stay unknowns
   // (empty: none do).
-  PressurePoissonEquation(const IsphSchemes& schemes, std::unique_ptr<LinearSolver> solver,
+  // `tensionCutoff`: p ← max(p, 0) after the solve.
+  PressurePoissonEquation(const PpeSettings& settings, bool tensionCutoff, std::unique_ptr<LinearSolver> solver,
                           std::vector<char> keepCompressed = {});
 
   // Assemble and solve; writes p into ps.cloud.p for the material particles (warm start from
@@ -77,7 +78,8 @@ class PressurePoissonEquation {
                 const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt,
                 const std::vector<double>* base = nullptr);
 
-  IsphSchemes schemes_;
+  PpeSettings settings_;
+  bool tensionCutoff_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<char> keepCompressed_;
   SparseSystem system_;

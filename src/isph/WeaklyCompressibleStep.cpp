@@ -27,11 +27,11 @@ PairGeometry pairGeometry(const ParticleSystem& ps, const Kernel& kernel, std::s
 
 }  // namespace
 
-WeaklyCompressibleStep::WeaklyCompressibleStep(const IsphSchemes& schemes, double soundSpeed)
+WeaklyCompressibleStep::WeaklyCompressibleStep(const WcsphSettings& settings, bool tensionCutoff, double soundSpeed)
     : c0_(soundSpeed),
-      delta_(schemes.densityDiffusion),
-      alpha_(schemes.artificialViscosity),
-      tensionCutoff_(schemes.tensionCutoff) {}
+      delta_(settings.densityDiffusion),
+      alpha_(settings.artificialViscosity),
+      tensionCutoff_(tensionCutoff) {}
 
 void WeaklyCompressibleStep::initialiseDensity(const ParticleSystem& ps) {
   density_.resize(ps.size());

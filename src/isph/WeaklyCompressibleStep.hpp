@@ -49,7 +49,7 @@ namespace isph {
 class WeaklyCompressibleStep {
  public:
   // c0 [m/s] from the schemes (already resolved from the scene by the caller).
-  WeaklyCompressibleStep(const IsphSchemes& schemes, double soundSpeed);
+  WeaklyCompressibleStep(const WcsphSettings& settings, bool tensionCutoff, double soundSpeed);
 
   double soundSpeed() const { return c0_; }
   // ρ from the pressures of all particles (the start and a restart).

@@ -50,18 +50,18 @@ TEST(IsphSchemes, WeaklyCompressibleMethodIsExplicitWithItsDefaults) {
   const IsphSchemes s = schemesFrom("method wcsph;\n");
   EXPECT_EQ(s.method, Method::wcsph);
   EXPECT_EQ(s.viscousTerm, ViscousTerm::explicit_);
-  EXPECT_EQ(s.soundSpeed, 0.0) << "0: from the scene";
-  EXPECT_EQ(s.densityDiffusion, 0.1);
-  EXPECT_EQ(s.artificialViscosity, 0.1);
+  EXPECT_EQ(s.wcsph.soundSpeed, 0.0) << "0: from the scene";
+  EXPECT_EQ(s.wcsph.densityDiffusion, 0.1);
+  EXPECT_EQ(s.wcsph.artificialViscosity, 0.1);
   EXPECT_NE(s.describe().find("weakly-compressible SPH"), std::string::npos) << s.describe();
 }
 
 TEST(IsphSchemes, WeaklyCompressibleEntriesAreRead) {
   const IsphSchemes s =
       schemesFrom("method wcsph;\nwcsph { soundSpeed 25; densityDiffusion 0; artificialViscosity 0.02; }\n");
-  EXPECT_EQ(s.soundSpeed, 25.0);
-  EXPECT_EQ(s.densityDiffusion, 0.0);
-  EXPECT_EQ(s.artificialViscosity, 0.02);
+  EXPECT_EQ(s.wcsph.soundSpeed, 25.0);
+  EXPECT_EQ(s.wcsph.densityDiffusion, 0.0);
+  EXPECT_EQ(s.wcsph.artificialViscosity, 0.02);
   EXPECT_NE(s.describe().find("sound speed 25 m/s"), std::string::npos) << s.describe();
   EXPECT_NE(s.describe().find("density diffusion off"), std::string::npos) << s.describe();
 }
@@ -116,10 +116,10 @@ TEST(IsphSchemes, SmoothingThePairFormIsAnErrorAtItsLine) {
 }
 
 TEST(IsphSchemes, ShiftingNearTheSurfaceIsOffUnlessPairsAreAskedFor) {
-  EXPECT_FALSE(schemesFrom("").shiftPairsNearSurface);
+  EXPECT_FALSE(schemesFrom("").shifting.pairsNearSurface);
   EXPECT_NE(schemesFrom("").describe().find("none next to it"), std::string::npos) << schemesFrom("").describe();
   const IsphSchemes s = schemesFrom("shifting { nearSurface pairs; }\n");
-  EXPECT_TRUE(s.shiftPairsNearSurface);
+  EXPECT_TRUE(s.shifting.pairsNearSurface);
   EXPECT_NE(s.describe().find("the pair term alone next to it"), std::string::npos) << s.describe();
 }
 
@@ -172,7 +172,7 @@ TEST(IsphSchemes, TheWeaklyCompressibleMethodLeavesTheProjectionsEntriesUnread) 
   const int warnings = warningCount();
   const IsphSchemes s = schemesFrom("method wcsph;\nsource { type divergence; alpha 7; }\nlaplacian { eta 9; }\n");
   EXPECT_EQ(warningCount() - warnings, 2) << "one warning for each of the projection's entries, no range error";
-  EXPECT_EQ(s.source, PpeSource::densityInvariant);
+  EXPECT_EQ(s.ppe.source, PpeSource::densityInvariant);
   EXPECT_EQ(s.describe().find("PPE"), std::string::npos) << s.describe();
 }
 

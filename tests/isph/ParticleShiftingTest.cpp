@@ -43,9 +43,9 @@ struct Block {
 
   Vec3 shiftOf(std::size_t a, bool pairsNearSurface = false) {
     const Vec3 before = ps.cloud.positions[a];
-    IsphSchemes schemes;
-    schemes.shiftPairsNearSurface = pairsNearSurface;
-    shiftParticles(ps, *kernel, surface, schemes, dt);
+    ShiftingSettings settings;
+    settings.pairsNearSurface = pairsNearSurface;
+    shiftParticles(ps, *kernel, surface, settings, IsphSchemes{}.correctionMinDeterminant, true, dt);
     return ps.cloud.positions[a] - before;
   }
 };
@@ -65,7 +65,7 @@ TEST(ParticleShifting, PairsNearSurfaceSeparatesAPairAlongItsLine) {
   const Vec3 s = b.shiftOf(at(6, 5), true);
   EXPECT_LT(s.y(), -0.01 * dx) << "the lower particle of the pair moves away from the upper one";
   EXPECT_LT(std::abs(s.x()), 0.05 * std::abs(s.y())) << "along the line of centres";
-  EXPECT_LE(s.norm(), IsphSchemes().maxShift * dx * (1 + 1e-12)) << "capped at maxShift dx";
+  EXPECT_LE(s.norm(), ShiftingSettings().maxShift * dx * (1 + 1e-12)) << "capped at maxShift dx";
 }
 
 TEST(ParticleShifting, PairsNearSurfaceLeavesTheLatticeWhereItIs) {

@@ -141,7 +141,7 @@ TEST(PressurePoissonEquation, TheMatrixHasTheMMatrixSignsAndIdentityRowsOnTheFre
   for (std::size_t a = 0; a < ps.nMaterial; ++a)
     ps.rho[a] = rho * (1 + 0.01 * (n - 1 - static_cast<int>(a) / n));
   const std::vector<Vec3> ustar(ps.size(), Vec3(dt * g));
-  PressurePoissonEquation ppe(IsphSchemes{}, solverFrom("solver EigenLU; tolerance 1e-12;"));
+  PressurePoissonEquation ppe(PpeSettings{}, true, solverFrom("solver EigenLU; tolerance 1e-12;"));
   ppe.solve(ps, *tank.kernel, tank.L, ustar, tank.surface, g, dt);
   const SparseSystem& A = ppe.system();
 
@@ -207,9 +207,9 @@ TEST(PressurePoissonEquation, TheUncorrectedMatrixIsSymmetric) {
     ps.rho[a] = rho * (1 + 0.01 * (n - 1 - static_cast<int>(a) / n));
   const std::vector<Vec3> ustar(ps.size(), Vec3(dt * g));
   auto asymmetry = [&](bool correction, bool& hint) {
-    IsphSchemes schemes;
-    schemes.laplacianCorrection = correction;
-    PressurePoissonEquation ppe(schemes, solverFrom("solver EigenLU; tolerance 1e-12;"));
+    PpeSettings settings;
+    settings.laplacianCorrection = correction;
+    PressurePoissonEquation ppe(settings, true, solverFrom("solver EigenLU; tolerance 1e-12;"));
     ppe.solve(ps, *tank.kernel, tank.L, ustar, tank.surface, g, dt);
     const SparseSystem& A = ppe.system();
     hint = A.symmetricHint;
@@ -268,10 +268,9 @@ TEST(PressurePoissonEquation, WaterAtRestInATankHasTheHydrostaticPressure) {
     Tank tank(jitter);
     ParticleSystem& ps = tank.ps;
     const std::vector<Vec3> ustar(ps.size(), Vec3(dt * g));
-    IsphSchemes schemes;
-    schemes.tensionCutoff = false;
-    if (jitter > 0) schemes.source = PpeSource::divergence;
-    PressurePoissonEquation ppe(schemes, solverFrom("solver EigenLU; tolerance 1e-12;"));
+    PpeSettings settings;
+    if (jitter > 0) settings.source = PpeSource::divergence;
+    PressurePoissonEquation ppe(settings, false, solverFrom("solver EigenLU; tolerance 1e-12;"));  // no cut-off
     const SolverPerformance perf = ppe.solve(ps, *tank.kernel, tank.L, ustar, tank.surface, g, dt);
     ASSERT_TRUE(perf.converged) << perf.str();
     updateWallPressure(ps, ustar, g, dt);  // the walls' pressures from the solved field (WallBoundary::update)
@@ -335,7 +334,7 @@ TEST(PressurePoissonEquation, TheFreeSurfaceEndsAtZeroPressureExactly) {
       ustar[a] = -1.0 * (ps.cloud.positions[a] - centre);
     }
   }
-  PressurePoissonEquation ppe(IsphSchemes{},
+  PressurePoissonEquation ppe(PpeSettings{}, true,
                               solverFrom("solver EigenBiCGSTAB; tolerance 1e-10; maxIter 500;"));
   const SolverPerformance perf = ppe.solve(ps, *kernel, L, ustar, ring, Vec3::Zero(), dt);
   ASSERT_TRUE(perf.converged) << perf.str();

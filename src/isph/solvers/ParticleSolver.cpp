@@ -225,8 +225,10 @@ TimeStepLimits ParticleSolver::nextDeltaT(const Time& time) const {
 
 void ParticleSolver::finishStep(const Time& time, StepReport& report) {
   const double dt = time.deltaT();
-  if (schemes_.shifting) {
-    report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_, dt).maxShift;
+  if (schemes_.shifting.enabled) {
+    report.maxShift = shiftParticles(ps_, *kernel_, freeSurface_->flags(), schemes_.shifting,
+                                     schemes_.correctionMinDeterminant, schemes_.tensionCutoff, dt)
+                          .maxShift;
   }
   report.collisions = separateCloseParticles(ps_, schemes_.collisionDistance).moved;
   const WallGuardResult guard = guardWallPenetration(ps_, schemes_.wallSafeguardDistance);

@@ -29,7 +29,7 @@ ProjectionSolver::ProjectionSolver(const Time& time, bool parallel) : ParticleSo
                         (schemes_.compressedSurface == CompressedSurface::granular &&
                          (*materials_)[i].granular());
   }
-  ppe_ = std::make_unique<PressurePoissonEquation>(schemes_, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
+  ppe_ = std::make_unique<PressurePoissonEquation>(schemes_.ppe, schemes_.tensionCutoff, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
                                                    std::move(keepCompressed));
   if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
     viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), ps_.cloud.properties.dimension,

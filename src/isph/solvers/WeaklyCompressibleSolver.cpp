@@ -25,7 +25,7 @@ WeaklyCompressibleSolver::WeaklyCompressibleSolver(const Time& time, bool parall
   waveSpeed_ = elasticWave;
   // c0: given, else a restart's (the first start's scene), else the elastic bulk speed
   // (p = K (ρ − ρ0)/ρ0), else from the scene's height.
-  double c0 = schemes_.soundSpeed;
+  double c0 = schemes_.wcsph.soundSpeed;
   std::string origin = "system/isphSchemes";
   if (c0 <= 0 && state_ && state_->soundSpeed > 0) c0 = state_->soundSpeed, origin = "the solver state";
   if (c0 <= 0 && elasticSound > 0) c0 = elasticSound, origin = "sqrt(K/rho) of the elastic-plastic material";
@@ -35,7 +35,7 @@ WeaklyCompressibleSolver::WeaklyCompressibleSolver(const Time& time, bool parall
                "give one in system/isphSchemes, e.g. wcsph { soundSpeed 20; }");
   }
   info("    sound speed c0 = {:.4g} m/s ({})", c0, origin);
-  wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_, c0);
+  wcsph_ = std::make_unique<WeaklyCompressibleStep>(schemes_.wcsph, schemes_.tensionCutoff, c0);
   if (freshStart_) {  // the walls' densities from the hydrostatic extrapolation of the material's pressure
     walls_->settle(*kernel_, std::vector<Vec3>(ps_.nMaterial, g_));  // u* = g dt with dt = 1
   }
@@ -94,7 +94,7 @@ StepReport WeaklyCompressibleSolver::step(const Time& time) {
   {
     auto t = timer_.scope("kernel and corrections");  // the strain rate's corrected gradients
     correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
-    if (schemes_.shifting) {  // only the shifting needs the free surface
+    if (schemes_.shifting.enabled) {  // only the shifting needs the free surface
       freeSurface_->detect(ps_);
       report.freeSurface = freeSurface_->nSurfaceMaterial();
     }
