@@ -1,5 +1,7 @@
 #include "isph/IsphSchemes.hpp"
 
+#include "isph/SchemeConflicts.hpp"
+
 #include <fmt/format.h>
 
 namespace isph {
@@ -170,49 +172,6 @@ void readWallFriction(const Dictionary& d, IsphSchemes& s) {
   wf.checkKeywords();
 }
 
-// The settings that exclude each other whatever the scene: a FatalIOError at the entry that
-// would be ignored; with method wcsph, a warning at each of the projection's entries. (pressureGradient symmetric with `incrementalPressure granular` depends on
-// the scene's materials: ProjectionSolver checks it.)
-void checkConflicts(const Dictionary& d, const IsphSchemes& s) {
-  const auto conflict = [&](const Dictionary& where, const char* key, const std::string& why) {
-    fatalIOError(where.findEntry(key)->location(), fmt::format("keyword '{}' in {}: {}", key, where.name(), why));
-  };
-  if (s.method == Method::wcsph) {  // no PPE, no implicit solve: the projection's entries are not read
-    for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
-      if (const Entry* e = d.findEntry(key)) {
-        warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
-                            d.name()),
-                e->location());
-        d.markRead(key);
-      }
-    }
-    return;
-  }
-  const bool incremental = s.incrementalPressure != MaterialScope::none;
-  if (incremental && s.viscousTerm == ViscousTerm::explicit_) {
-    conflict(d, "incrementalPressure",
-             "the incremental projection needs the semi-implicit deviatoric term (viscousTerm implicit); with "
-             "viscousTerm explicit it is not used: remove one of the two");
-  }
-  if (!incremental && d.found("laggedPressure")) {
-    conflict(d, "laggedPressure",
-             "the lagged pressure is the incremental projection's (incrementalPressure granular or all); with "
-             "incrementalPressure none it is not used: remove it");
-  }
-  if (s.incrementalPressure == MaterialScope::all && s.pressureGradient == PressureGradientForm::symmetric) {
-    conflict(d, "pressureGradient",
-             "the incremental projection (incrementalPressure all) corrects with the renormalised gradient of the "
-             "increment; the symmetric form is not used: remove one of the two");
-  }
-  const Dictionary wf = d.subDictOrEmpty("wallFriction");
-  if (incremental && s.laggedForm == LaggedPressureForm::pairs && s.frictionNormal == FrictionNormal::hydrostatic) {
-    conflict(wf, "normalForce",
-             "with the incremental projection's pair form (laggedPressure { form pairs; }) the Coulomb capacity is "
-             "the wall pairs' normal reaction; normalForce hydrostatic is not used: remove it or use "
-             "laggedPressure { form gradient; }");
-  }
-}
-
 }  // namespace
 
 IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
@@ -229,7 +188,7 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   readStepControls(d, s);
   readViscousAndProjection(d, s);
   readWallFriction(d, s);
-  checkConflicts(d, s);
+  checkSchemeConflicts(d, s);
   d.checkKeywords();
   return s;
 }

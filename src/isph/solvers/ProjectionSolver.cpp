@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 
-#include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "isph/ElasticPlasticStress.hpp"
 #include "isph/IntermediateVelocity.hpp"
 #include "isph/LaggedPressure.hpp"
+#include "isph/SchemeConflicts.hpp"
 #include "isph/VelocityCorrection.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 
@@ -38,12 +38,7 @@ ProjectionSolver::ProjectionSolver(const Time& time, bool parallel) : ParticleSo
                    (schemes_.incrementalPressure == MaterialScope::granular && materials_->anyGranular());
   }
   solution.checkKeywords({"U"});
-  if (incremental_ && schemes_.pressureGradient == PressureGradientForm::symmetric) {
-    fatalIOError(schemes_.pressureGradientAt,
-                 "keyword 'pressureGradient' in system/isphSchemes: the incremental projection (incrementalPressure "
-                 "granular, acting in this scene of granular material) corrects with the renormalised gradient of "
-                 "the increment; the symmetric form would not be used: remove one of the two");
-  }
+  checkSchemesForScene(schemes_, incremental_);
   finishConstruction();
 }
 
