@@ -160,41 +160,31 @@ void ProjectionSolver::correctAndMove(double dt) {
   }
 }
 
-StepReport ProjectionSolver::step(const Time& time) {
-  ++stepsTaken_;
-  const double dt = time.deltaT();
-  StepReport report;
-  {
-    const bool reorder = reorderDue();
-    if (distributed_) {  // parallel: new ghosts; on reordering steps, migration (and repartition)
-      auto t = timer_.scope("migration and ghosts");
-      distributed_->beginStep(ps_, *materials_, kernel_->supportRadius(), reorder, time);
-    }
-    auto t = timer_.scope("neighbour search");
-    if (reorder) {
-      if (!distributed_) reorderMaterialParticles(ps_, kernel_->supportRadius());
-      ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
-      if (viscous_) viscous_->renumbered();
-    }
-    ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+void ProjectionSolver::findNeighbours(const Time& time) {
+  const bool reorder = reorderDue();
+  if (distributed_) {  // parallel: new ghosts; on reordering steps, migration (and repartition)
+    auto t = timer_.scope("migration and ghosts");
+    distributed_->beginStep(ps_, *materials_, kernel_->supportRadius(), reorder, time);
   }
-  // The pressure is the only particle field changed before the PPE has converged (positions
-  // and velocities change after it): kept to restore the step start if it does not.
-  pStart_ = ps_.cloud.p;
-  {
-    auto t = timer_.scope("kernel and corrections");
-    correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
-    freeSurface_->detect(ps_);
-    report.freeSurface = freeSurface_->nSurfaceMaterial();
-    walls_->prepare(freeSurface_->flags());
+  auto t = timer_.scope("neighbour search");
+  if (reorder) {
+    if (!distributed_) reorderMaterialParticles(ps_, kernel_->supportRadius());
+    ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
+    if (viscous_) viscous_->renumbered();
   }
-  intermediateVelocity(time, report);  // Eq. 6
-  if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
-    viscous_->renumbered();  // nothing has moved yet; a retry (stepWithRetry) builds a fresh hierarchy for U
-    ps_.cloud.p = pStart_;   // (the lagged pressure's smoothing may have changed it)
-    return report;
-  }
-  if (!lagged_.empty()) {  // Eq. 10: the increment that the step applies to the predictor that saw pⁿ
+  ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+}
+
+void ProjectionSolver::correctKernels(StepReport& report) {
+  auto t = timer_.scope("kernel and corrections");
+  correction_.update(ps_, schemes_.kernelCorrection, schemes_.correctionMinDeterminant);
+  freeSurface_->detect(ps_);
+  report.freeSurface = freeSurface_->nSurfaceMaterial();
+  walls_->prepare(freeSurface_->flags());
+}
+
+void ProjectionSolver::solvePressure(double dt, StepReport& report) {
+  if (!lagged_.empty()) {  // the increment that the step applies to the predictor that saw pⁿ
     report.ppe = ppe_->solveIncrement(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt, increment_);
   } else {
     report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
@@ -202,14 +192,33 @@ StepReport ProjectionSolver::step(const Time& time) {
   timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
   timer_.add("PPE setup", report.ppe.setupSeconds);
   timer_.add("PPE solve", report.ppe.solveSeconds);
-  if (report.failedSolve()) {  // the particles as at the step start; the caller decides (stepWithRetry)
+}
+
+StepReport ProjectionSolver::step(const Time& time) {
+  ++stepsTaken_;
+  const double dt = time.deltaT();
+  StepReport report;
+  findNeighbours(time);
+  // The pressure is the only particle field changed before the PPE has converged (positions
+  // and velocities change after it): kept to restore the step start if a solve fails, for
+  // the caller to redo the step (stepWithRetry).
+  pStart_ = ps_.cloud.p;
+  correctKernels(report);  // renormalisation, free surface, the walls' state
+  intermediateVelocity(time, report);  // Eq. 6
+  if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
+    viscous_->renumbered();  // nothing has moved yet; a retry builds a fresh hierarchy for U
+    ps_.cloud.p = pStart_;   // (the lagged pressure's smoothing may have changed it)
+    return report;
+  }
+  solvePressure(dt, report);  // Eq. 10
+  if (report.failedSolve()) {
     ps_.cloud.p = pStart_;
     return report;
   }
   if (lagged_.empty()) walls_->update(ustar_, dt);  // the walls' pressures of the step (p^{n+1})
   auto t = timer_.scope("velocity correction and shifting");
-  correctAndMove(dt);  // Eq. 11
-  finishStep(time, report);
+  correctAndMove(dt);  // Eq. 11, x^{n+1}
+  finishStep(time, report);  // shifting, safeguards, domain
   return report;
 }
 

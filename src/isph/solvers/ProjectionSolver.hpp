@@ -1,8 +1,9 @@
 #pragma once
 // The paper's method (`method isph;`, the default): one ISPH projection step (Chorin; Eqs.
-// 6-11) as a short list of stages over small single-purpose classes:
-//   neighbours → kernel correction → free surface → u* (Eq. 6) → PPE (Eqs. 8/10) →
-//   velocity correction (Eq. 11) → move → shift → wall safeguard (ParticleSolver::finishStep)
+// 6-11) as a short list of stages over small single-purpose classes (step()):
+//   findNeighbours → correctKernels (renormalisation, free surface, WallBoundary::prepare) →
+//   intermediateVelocity, u* (Eq. 6) → solvePressure, the PPE (Eqs. 8/10) →
+//   WallBoundary::update → correctAndMove (Eq. 11, x^{n+1}) → finishStep (shifting, safeguards)
 //
 // Incremental projection (isphSchemes `incrementalPressure granular|all;`, default none; only
 // with the semi-implicit viscous term): the viscous solve of u* sees the pressure force of the
@@ -49,6 +50,13 @@ class ProjectionSolver final : public ParticleSolver {
   void afterWrite() override;
   std::string wallCondition() const override { return "Neumann wall pressure"; }
 
+  // The step's neighbours; every reorderInterval-th step the material reordered along cells
+  // first (parallel: ghosts, and migration on those steps).
+  void findNeighbours(const Time& time);
+  // The kernel gradient correction, the free surface and the walls' state at the step start.
+  void correctKernels(StepReport& report);
+  // The PPE (Eq. 10) for p^{n+1}, or for its increment in the incremental projection.
+  void solvePressure(double dt, StepReport& report);
   // u* of Eq. 6: the deviatoric term (semi-implicit or explicit), gravity, the wall friction
   // and, in the incremental projection, the lagged pressure force.
   void intermediateVelocity(const Time& time, StepReport& report);
