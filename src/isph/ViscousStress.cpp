@@ -32,11 +32,16 @@ void ViscousStress::keepActing(const std::vector<Vec3>* ustar, long step) {
 const std::vector<SymmTensor>* ViscousStress::tau(long step) {
   if (!materials_.anyDeviatoricStress()) return nullptr;
   if (tauStep_ != step) {
-    const double maxNu = maxNu_;  // (the time step must not depend on whether a write asked)
+    // (The time step must not depend on whether a write asked: the largest η/ρ stays, and so
+    // does whether η is known, else a write before the first step would leave known() with
+    // maxNu() 0 and no viscous limit in place of the models' bound.)
+    const double maxNu = maxNu_;
+    const bool known = this->known();
     update();
-    maxNu_ = maxNu;
     tau_ = deviatoricStress(ps_, strain_, eta_);
     tauStep_ = step;
+    maxNu_ = maxNu;
+    if (!known) eta_.clear();
   }
   return &tau_;
 }

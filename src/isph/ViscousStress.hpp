@@ -26,8 +26,8 @@ class ViscousStress {
   // which carries the projection's splitting error as a strain rate that no stress resisted.
   void keepActing(const std::vector<Vec3>* ustar, long step);
   // τ of step `step`, or null when no material has one; before the first step (no τ kept for
-  // it), 2 η D of the state read, as the first step's predictor will see it. The largest η/ρ,
-  // and with it the time step, stays as it was.
+  // it), 2 η D of the state read, as the first step's predictor will see it. The largest η/ρ
+  // and whether η is known, and with them the time step, stay as they were.
   const std::vector<SymmTensor>* tau(long step);
 
   const std::vector<double>& eta() const { return eta_; }
