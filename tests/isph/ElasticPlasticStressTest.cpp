@@ -27,10 +27,7 @@ constexpr double dx = 0.01, rho = 2650, E = 0.84e6, nu = 0.3;
 constexpr int n = 14;
 const std::string rods = "rods { model elasticPlastic; rho 2650; phi 19.8; cohesion 0; E 0.84e6; nu 0.3; }";
 
-bool interior(std::size_t a) {
-  const int i = static_cast<int>(a) % n, j = static_cast<int>(a) / n;
-  return i >= 3 && i < n - 3 && j >= 3 && j < n - 3;
-}
+bool interior(std::size_t a) { return test::inInterior(a, n); }
 
 double rootJ2(const SymmTensor& s) { return std::sqrt(0.5 * doubleDotSymm(s)); }
 

@@ -21,10 +21,7 @@ constexpr double dx = 0.01, h = 1.3 * dx, rho = 1000, dt = 1e-4;
 constexpr int n = 14;
 const Vec3 g(0, -9.81, 0);
 
-bool interior(std::size_t a) {
-  const int i = static_cast<int>(a) % n, j = static_cast<int>(a) / n;
-  return i >= 3 && i < n - 3 && j >= 3 && j < n - 3;
-}
+bool interior(std::size_t a) { return test::inInterior(a, n); }
 
 struct Block {
   std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", h, 2);

@@ -30,4 +30,11 @@ inline ParticleSystem latticeBlock(const Kernel& kernel, int n, double dx, const
   return ps;
 }
 
+// Whether lattice particle a (index j n + i of the full block) has a full kernel support inside
+// the block: at least 3 spacings from every edge (h = 1.3 dx: the support is 2.6 dx).
+inline bool inInterior(std::size_t a, int n) {
+  const int i = static_cast<int>(a) % n, j = static_cast<int>(a) / n;
+  return i >= 3 && i < n - 3 && j >= 3 && j < n - 3;
+}
+
 }  // namespace isph::test

@@ -42,10 +42,7 @@ WcsphSettings wcsphSettings(double delta = 0.1, double alpha = 0.1) {
   return s;
 }
 
-bool interior(std::size_t a) {
-  const int i = static_cast<int>(a) % n, j = static_cast<int>(a) / n;
-  return i >= 3 && i < n - 3 && j >= 3 && j < n - 3;
-}
+bool interior(std::size_t a) { return test::inInterior(a, n); }
 
 // The n × n block of one material of density ρ0 at rest, p = 0.
 struct Block {
