@@ -60,7 +60,7 @@ void initialiseParticleSystem(ParticleSystem& ps, const MaterialTable& materials
     fatalError(fmt::format("cloud '{}' has no material particles: nothing to simulate", c.name));
   }
 
-  // Densities and volumes; walls take the mass-weighted mean density of the materials.
+  // Densities and volumes; walls take the materials' bulk density, total mass over total volume.
   const std::size_t n = c.size();
   ps.rho.assign(n, 0.0);
   ps.volume.assign(n, 0.0);

@@ -24,7 +24,7 @@ struct ParticleSystem {
   std::vector<double> rho;     // material: its density; wall and dummy: the wall reference density
   std::vector<double> volume;  // m/ρ (material), the area of a wall site (walls)
   std::vector<int> parentWall; // dummy particle -> the wall particle it extends (-1 for others)
-  double wallRho = 0;          // the wall reference density (mass-weighted mean of the materials)
+  double wallRho = 0;          // the wall reference density: the materials' bulk density, Σm / Σ(m/ρ)
   std::vector<double> wallPullLimit;  // the most suction a wall may exert (WallBoundaryPressure)
   std::vector<Vec3> wallTangentialGradient;  // ∇p along a friction wall as seen from a (WallBoundaryPressure)
   std::vector<char> frictionWall;  // boundary particle of a patch with a friction angle

@@ -143,11 +143,12 @@ void checkStillInDomain(const ParticleSystem& ps, const SceneDomain& domain, con
     }
     if ((x.array() < domain.min.array()).any() || (x.array() > domain.max.array()).any()) {
       fatalError(fmt::format("particle {} (origId {}) left the domain at time {}: position ({:.4g} {:.4g} {:.4g}), "
-                             "velocity ({:.3g} {:.3g} {:.3g}); the domain is the initial bounding box enlarged by "
-                             "its largest side, ({:.4g} {:.4g}) to ({:.4g} {:.4g}).\n    The last written time directory "
-                             "is intact.",
+                             "velocity ({:.3g} {:.3g} {:.3g}); the domain is the initial bounding box enlarged each "
+                             "way by its largest side and 10 dx, ({:.4g} {:.4g} {:.4g}) to ({:.4g} {:.4g} {:.4g}).\n    "
+                             "The last written time directory is intact.",
                              a, ps.cloud.origId[a], time.timeName(), x.x(), x.y(), x.z(), u.x(), u.y(), u.z(),
-                             domain.min.x(), domain.min.y(), domain.max.x(), domain.max.y()));
+                             domain.min.x(), domain.min.y(), domain.min.z(), domain.max.x(), domain.max.y(),
+                             domain.max.z()));
     }
   }
 }
