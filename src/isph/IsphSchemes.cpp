@@ -1,7 +1,5 @@
 #include "isph/IsphSchemes.hpp"
 
-#include "isph/SchemeConflicts.hpp"
-
 #include <fmt/format.h>
 
 namespace isph {
@@ -188,7 +186,16 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   readStepControls(d, s);
   readViscousAndProjection(d, s);
   readWallFriction(d, s);
-  checkSchemeConflicts(d, s);
+  if (s.method == Method::wcsph) {  // no PPE, no implicit solve: the projection's entries are not read
+    for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
+      if (const Entry* e = d.findEntry(key)) {
+        warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
+                            d.name()),
+                e->location());
+        d.markRead(key);
+      }
+    }
+  }
   d.checkKeywords();
   return s;
 }

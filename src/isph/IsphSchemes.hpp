@@ -61,7 +61,7 @@
 //                                    // wall pairs' normal reaction whatever this says
 //
 // Settings that exclude each other are a fatal error at the entry that would be ignored
-// (SchemeConflicts.hpp):
+// (SchemeConflicts.hpp, checked by the solver after reading):
 // incrementalPressure with viscousTerm explicit; laggedPressure with incrementalPressure none;
 // pressureGradient symmetric where the incremental projection acts (incrementalPressure all, or
 // granular in a scene with a granular material); wallFriction normalForce hydrostatic with

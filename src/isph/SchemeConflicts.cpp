@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include "core/Error.hpp"
-#include "core/Log.hpp"
 
 namespace isph {
 
@@ -11,17 +10,7 @@ void checkSchemeConflicts(const Dictionary& d, const IsphSchemes& s) {
   const auto conflict = [&](const Dictionary& where, const char* key, const std::string& why) {
     fatalIOError(where.findEntry(key)->location(), fmt::format("keyword '{}' in {}: {}", key, where.name(), why));
   };
-  if (s.method == Method::wcsph) {  // no PPE, no implicit solve: the projection's entries are not read
-    for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
-      if (const Entry* e = d.findEntry(key)) {
-        warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
-                            d.name()),
-                e->location());
-        d.markRead(key);
-      }
-    }
-    return;
-  }
+  if (s.method == Method::wcsph) return;  // (it reads none of the projection's entries: IsphSchemes::read)
   const bool incremental = s.incrementalPressure != MaterialScope::none;
   if (incremental && s.viscousTerm == ViscousTerm::explicit_) {
     conflict(d, "incrementalPressure",

@@ -6,8 +6,8 @@
 
 namespace isph {
 
-// Those that exclude each other whatever the scene (IsphSchemes::read); with method wcsph, a
-// warning at each of the projection's entries, which it does not read.
+// Those that exclude each other whatever the scene, in `dict` as `schemes` was read from it
+// (IsphSchemes::read; none with method wcsph, which reads none of the projection's entries).
 void checkSchemeConflicts(const Dictionary& dict, const IsphSchemes& schemes);
 // Those that depend on the scene's materials: `incrementalActs`, the incremental projection
 // acts in this scene (incrementalPressure all, or granular with a granular material).

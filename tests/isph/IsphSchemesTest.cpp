@@ -135,5 +135,13 @@ TEST(IsphSchemes, UnknownNearSurfaceShiftingIsAnErrorAtItsLine) {
   }
 }
 
+TEST(IsphSchemes, TheWeaklyCompressibleMethodLeavesTheProjectionsEntriesUnread) {
+  const int warnings = warningCount();
+  const IsphSchemes s = schemesFrom("method wcsph;\nsource { type divergence; alpha 7; }\nlaplacian { eta 9; }\n");
+  EXPECT_EQ(warningCount() - warnings, 2) << "one warning for each of the projection's entries, no range error";
+  EXPECT_EQ(s.ppe.source, PpeSource::densityInvariant);
+  EXPECT_EQ(s.describe().find("PPE"), std::string::npos) << s.describe();
+}
+
 }  // namespace
 }  // namespace isph

@@ -1,9 +1,8 @@
-// The settings of system/isphSchemes that exclude each other (SchemeConflicts.hpp), read
-// through IsphSchemes::read: each conflict is an error at the line of the entry that would be
-// ignored, saying what it needs; the pairs that go together are accepted; method wcsph leaves
-// the projection's entries unread with a warning each. (The scene-dependent check, the
-// symmetric gradient where the incremental projection acts, is tested on a case:
-// solvers/ParticleSolverTest.cpp.)
+// The settings of system/isphSchemes that exclude each other (SchemeConflicts.hpp), checked
+// as the solver checks them after IsphSchemes::read: each conflict is an error at the line of
+// the entry that would be ignored, saying what it needs; the pairs that go together are
+// accepted. (The scene-dependent check, the symmetric gradient where the incremental
+// projection acts, is tested on a case: solvers/ParticleSolverTest.cpp.)
 #include "isph/SchemeConflicts.hpp"
 
 #include <gtest/gtest.h>
@@ -16,8 +15,12 @@
 namespace isph {
 namespace {
 
+// The schemes of `text`, read and checked as the solver does.
 IsphSchemes schemesFrom(const std::string& text) {
-  return IsphSchemes::read(Dictionary::parse(text, "isphSchemes"), 2);
+  const Dictionary dict = Dictionary::parse(text, "isphSchemes");
+  const IsphSchemes schemes = IsphSchemes::read(dict, 2);
+  checkSchemeConflicts(dict, schemes);
+  return schemes;
 }
 
 // Settings that exclude each other: an error at the line of the entry that would be ignored,
@@ -51,14 +54,6 @@ TEST(SchemeConflicts, SettingsThatGoTogetherAreAccepted) {
   EXPECT_NO_THROW(schemesFrom("incrementalPressure granular;\nlaggedPressure { form gradient; }\n"
                               "wallFriction { normalForce hydrostatic; }\n"));
   EXPECT_NO_THROW(schemesFrom("viscousTerm explicit;\npressureGradient symmetric;\n"));
-}
-
-TEST(SchemeConflicts, TheWeaklyCompressibleMethodLeavesTheProjectionsEntriesUnread) {
-  const int warnings = warningCount();
-  const IsphSchemes s = schemesFrom("method wcsph;\nsource { type divergence; alpha 7; }\nlaplacian { eta 9; }\n");
-  EXPECT_EQ(warningCount() - warnings, 2) << "one warning for each of the projection's entries, no range error";
-  EXPECT_EQ(s.ppe.source, PpeSource::densityInvariant);
-  EXPECT_EQ(s.describe().find("PPE"), std::string::npos) << s.describe();
 }
 
 }  // namespace

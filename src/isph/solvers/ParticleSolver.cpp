@@ -11,6 +11,7 @@
 #include "isph/Gravity.hpp"
 #include "isph/ParticleCollision.hpp"
 #include "isph/ParticleShifting.hpp"
+#include "isph/SchemeConflicts.hpp"
 #include "isph/StartupChecks.hpp"
 #include "isph/WallPenetrationGuard.hpp"
 #include "isph/parallel/GhostExchange.hpp"
@@ -65,6 +66,7 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   const Dictionary schemesDict = Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes");
   kernel_ = makeKernel(schemesDict, ps_.cloud.properties.spacing, dim);
   schemes_ = IsphSchemes::read(schemesDict, dim);
+  checkSchemeConflicts(schemesDict, schemes_);
   materials_ = std::make_unique<MaterialTable>(time.path() / "constant" / "materialProperties",
                                                ps_.cloud.properties.materials);
   g_ = readGravity(time.path());
