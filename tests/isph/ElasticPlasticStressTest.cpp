@@ -135,11 +135,17 @@ SymmTensor tensor(double k) {
   return s;
 }
 
+// A written field of deviatoric stresses, a different one per particle.
+std::vector<SymmTensor> distinctStresses(std::size_t n) {
+  std::vector<SymmTensor> written(n);
+  for (std::size_t a = 0; a < n; ++a) written[a] = tensor(double(a) + 1);
+  return written;
+}
+
 TEST(ElasticPlasticStress, ARestartsWrittenStressIsTheStateAndTheWallsCarryNone) {
   Block b(1000);
   const ParticleSystem ps = withWalls(b.ps);
-  std::vector<SymmTensor> written(ps.size());
-  for (std::size_t a = 0; a < ps.size(); ++a) written[a] = tensor(double(a) + 1);
+  const std::vector<SymmTensor> written = distinctStresses(ps.size());
   ElasticPlasticStress stress;
   stress.initialise(ps, &written);
   ASSERT_EQ(stress.deviatoric().size(), ps.size());
@@ -152,8 +158,7 @@ TEST(ElasticPlasticStress, ARestartsWrittenStressIsTheStateAndTheWallsCarryNone)
 TEST(ElasticPlasticStress, TheStressFollowsTheReorderingOfTheMaterial) {
   Block b(1000);
   const ParticleSystem ps = withWalls(b.ps);
-  std::vector<SymmTensor> written(ps.size());
-  for (std::size_t a = 0; a < ps.size(); ++a) written[a] = tensor(double(a) + 1);
+  const std::vector<SymmTensor> written = distinctStresses(ps.size());
   ElasticPlasticStress stress;
   stress.initialise(ps, &written);
   std::vector<int> order(ps.nMaterial);  // order[new] = old: reversed

@@ -111,6 +111,8 @@ void ParticleSolver::finishConstruction() {
     maxViscousAcceleration_ = state_->maxViscousAcceleration;
     restoreMethodState(*state_);
   }
+  state_.reset();      // (read at start only: the restart's per-particle entries, and the
+  writtenIds_ = {};    // order in which its fields were written)
   info("\nActive models and schemes");
   const std::size_t nMaterial = sumOverRanks(ps_.ownMaterial()), nWall = sumOverRanks(ps_.ownWall()),
                     nDummy = sumOverRanks(ps_.ownDummy());  // parallel: all ranks'

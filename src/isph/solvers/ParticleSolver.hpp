@@ -101,7 +101,7 @@ class ParticleSolver {
   // active models and schemes.
   void finishConstruction();
   // A field of the start time's cloud in the particles' order, or empty if it was not written
-  // (the cloud is reordered after reading).
+  // (the cloud is reordered after reading). Before finishConstruction only.
   template <class T>
   std::vector<T> readStartField(const std::string& name) const {
     const auto file = startCloudDir_ / name;
@@ -118,7 +118,8 @@ class ParticleSolver {
 
   static constexpr long reorderInterval = 50;  // steps between cell reorderings of the material
 
-  std::optional<StepState> state_;  // a restart's solver state (StepState.hpp), else none
+  std::optional<StepState> state_;  // a restart's solver state (StepState.hpp), else none;
+                                    // released by finishConstruction
   IsphSchemes schemes_;
   std::unique_ptr<MaterialTable> materials_;
   std::unique_ptr<Kernel> kernel_;
