@@ -177,12 +177,11 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       // A later pass changes only the rows of the particles whose state changed: the AMG
       // hierarchy of the first pass still preconditions it (each pass is logged and timed).
       // The passes before the last stop at `relTol` of `U { }`; the last, or a pass after
-      // which no state changes, is finished to the tolerance (OpenFOAM's UFinal). The
-      // tutorials keep relTol 0. With relTol 0.01 the sliding-block tests give the same figures
-      // to every printed digit, but on the barrier at 10.8 mm the inexact passes stop the states
-      // from settling (2,128 of 2,708 steps, 5.66 passes per step against 2,710 of 2,710 and
-      // 3.12) for no gain (79 s against 83 s). Classifying again after the finishing solve
-      // settles them but costs 91 s (2026-12-02).
+      // which no state changes, is finished to the tolerance (OpenFOAM's UFinal). The barrier
+      // tutorial takes relTol 1e-5 (the others 0): at 3.6 mm a quarter fewer PCG iterations,
+      // 551 s against 598 s, every step's states settled (doc/notes/barrier.md). Looser, the
+      // inexact passes misclassify: at 10.8 mm 1e-3 left 5 of 2,807 steps unsettled, 1e-2 35
+      // of 2,781 (4.23 passes per step against 2.76 at 1e-5; 2026-12-05).
       if (pass > 0) coupledSolver_->keepPreconditionerForNextSolve();
       const bool last = pass + 1 == maxFrictionPasses_;
       perf.push_back(last ? coupledSolver_->solveFinal(coupled_, xv) : coupledSolver_->solve(coupled_, xv));
