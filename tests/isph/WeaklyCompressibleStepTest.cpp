@@ -44,6 +44,21 @@ WcsphSettings wcsphSettings(double delta = 0.1, double alpha = 0.1) {
 
 bool interior(std::size_t a) { return test::inInterior(a, n); }
 
+// |Σ_a m_a f_a| over Σ_a |m_a f_a| for the material particles of `ps`, with f_a the force per
+// unit mass `force(a)`: 0 where the pairs' forces cancel, up to rounding.
+template <class Force>
+double netOverTotalForce(const ParticleSystem& ps, const char* what, Force force) {
+  Vec3 momentum = Vec3::Zero();
+  double scale = 0;
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
+    const Vec3 f = ps.rho[a] * ps.volume[a] * force(a);
+    momentum += f;
+    scale += f.norm();
+  }
+  std::printf("%s: |Σ m_a f_a| = %.3g of Σ |m_a f_a| = %.3g N/m\n", what, momentum.norm() / scale, scale);
+  return momentum.norm() / scale;
+}
+
 // The n × n block of one material of density ρ0 at rest, p = 0.
 struct Block {
   std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", h, 2);
@@ -230,16 +245,9 @@ TEST(WeaklyCompressibleStep, ThePressureForcesOfThePairsCancel) {
   WeaklyCompressibleStep wc(wcsphSettings(), true, c0);
   wc.setDensity(rho);
   wc.updatePressure(b.ps);
-  Vec3 momentum = Vec3::Zero();
-  double scale = 0;
-  for (std::size_t a = 0; a < b.ps.nMaterial; ++a) {
-    const Vec3 f = b.ps.rho[a] * b.ps.volume[a] * wc.pressureForce(b.ps, *b.kernel, a);
-    momentum += f;
-    scale += f.norm();
-  }
   // Zero up to rounding: measured 2.2e-17 of the sum of the forces' magnitudes.
-  std::printf("pressure forces: |Σ m_a f_a| = %.3g of Σ |m_a f_a| = %.3g N/m\n", momentum.norm() / scale, scale);
-  EXPECT_LT(momentum.norm(), 1e-13 * scale);
+  const auto pressure = [&](std::size_t a) { return wc.pressureForce(b.ps, *b.kernel, a); };
+  EXPECT_LT(netOverTotalForce(b.ps, "pressure forces", pressure), 1e-13);
 }
 
 TEST(WeaklyCompressibleStep, AHydrostaticPressureHoldsTheInteriorUpAgainstGravity) {
@@ -312,16 +320,9 @@ TEST(WeaklyCompressibleStep, TheDeviatoricForcesOfThePairsCancel) {
   }
   WeaklyCompressibleStep wc(wcsphSettings(), true, c0);
   wc.setDensity(rho);
-  Vec3 momentum = Vec3::Zero();
-  double scale = 0;
-  for (std::size_t a = 0; a < b.ps.nMaterial; ++a) {
-    const Vec3 f = b.ps.rho[a] * b.ps.volume[a] * wc.deviatoricForce(b.ps, *b.kernel, s, a);
-    momentum += f;
-    scale += f.norm();
-  }
   // Zero up to rounding: measured 2.3e-17 of the sum of the forces' magnitudes.
-  std::printf("deviatoric forces: |Σ m_a f_a| = %.3g of Σ |m_a f_a| = %.3g N/m\n", momentum.norm() / scale, scale);
-  EXPECT_LT(momentum.norm(), 1e-13 * scale);
+  const auto deviatoric = [&](std::size_t a) { return wc.deviatoricForce(b.ps, *b.kernel, s, a); };
+  EXPECT_LT(netOverTotalForce(b.ps, "deviatoric forces", deviatoric), 1e-13);
 }
 
 TEST(WeaklyCompressibleStep, ALinearShearStressGradientAcceleratesTheInteriorAlongIt) {
