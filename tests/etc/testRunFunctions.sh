@@ -288,6 +288,52 @@ err=$(runParallel -np x isphLandslideFoam 2>&1)
 check "runParallel -np x is an error [got '$err']" grep -q "whole number" <<< "$err"
 rm -f system/decomposeParDict log.isphLandslideFoam*
 
+echo "== runSolver"
+# Stand-ins for the three applications: each appends its name and arguments to a trace; the
+# fake mpirun above writes how it was called into log.isphLandslideFoam.
+mkdir -p "$scratch/solverApps"
+for app in decomposePar reconstructPar isphLandslideFoam; do
+    printf '#!/bin/sh\necho "%s $*" >> "$SOLVER_TRACE"\n' "$app" > "$scratch/solverApps/$app"
+    chmod +x "$scratch/solverApps/$app"
+done
+# runSolver's steps for the given arguments, as "app args;..." and then the mpirun line
+solverSteps() {
+    rm -f log.decomposePar log.reconstructPar log.isphLandslideFoam "$scratch/trace"
+    touch "$scratch/trace"
+    (PATH="$scratch/solverApps:$PATH" SOLVER_TRACE="$scratch/trace" ISPH_MPIRUN="$apps/fakeMpirun" \
+        OMPI_ALLOW_RUN_AS_ROOT=${rootVar-1} ISPH_PROGRESS=off runSolver "$@" > "$scratch/solver.out" 2>&1)
+    echo "$(tr '\n' ';' < "$scratch/trace")$(grep -o 'mpirun -np [0-9]*' log.isphLandslideFoam 2>/dev/null)"
+}
+serialRun="isphLandslideFoam ;"
+parallelRun="decomposePar ;reconstructPar ;mpirun -np $cores"
+check "runSolver without system/decomposeParDict: one process [got '$(solverSteps)']" \
+    test "$(solverSteps)" = "$serialRun"
+printf 'FoamFile { format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains  %s;\nmethod zoltan;\n' \
+    "$cores" > system/decomposeParDict
+check "runSolver with as many subdomains as cores: decomposePar, the ranks, reconstructPar [got '$(solverSteps)']" \
+    test "$(solverSteps)" = "$parallelRun"
+check "runSolver -test: one process [got '$(solverSteps -test)']" test "$(solverSteps -test)" = "$serialRun"
+check "runSolver -serial: one process [got '$(solverSteps -serial)']" test "$(solverSteps -serial)" = "$serialRun"
+check "runSolver -test -parallel: the ranks [got '$(solverSteps -test -parallel)']" \
+    test "$(solverSteps -test -parallel)" = "$parallelRun"
+if [ "$(id -u)" -eq 0 ]; then
+    got=$(rootVar= solverSteps)
+    check "runSolver as root without OMPI_ALLOW_RUN_AS_ROOT: one process [got '$got']" test "$got" = "$serialRun"
+    check "and it says why [got '$(cat "$scratch/solver.out")']" grep -q "OMPI_ALLOW_RUN_AS_ROOT=1" "$scratch/solver.out"
+fi
+printf 'FoamFile { format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains  %s;\nmethod zoltan;\n' \
+    "$((cores + 1))" > system/decomposeParDict
+check "runSolver with more subdomains than cores: one process [got '$(solverSteps)']" \
+    test "$(solverSteps)" = "$serialRun"
+check "runSolver -parallel with more subdomains than cores: the ranks [got '$(solverSteps -parallel)']" \
+    test "$(solverSteps -parallel)" = "decomposePar ;reconstructPar ;mpirun -np $((cores + 1))"
+failing() { printf '#!/bin/sh\nexit 3\n' > "$scratch/solverApps/$1"; }
+failing decomposePar
+solverSteps -parallel > /dev/null
+check "runSolver stops when decomposePar fails (no solver, no reconstructPar)" \
+    test ! -e log.isphLandslideFoam -a ! -e log.reconstructPar
+rm -f system/decomposeParDict log.*
+
 echo "== isTest/notTest"
 check "isTest finds -test" isTest a -test b
 check "notTest without -test" notTest a b
