@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/Log.hpp"
+#include "core/ResizeForOverwrite.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "isph/StepState.hpp"
 #include "isph/WallBoundaryPressure.hpp"
@@ -98,8 +99,8 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
     system_.rowStart[static_cast<std::size_t>(a) + 1] = system_.rowStart[static_cast<std::size_t>(a)] + count;
   }
   const auto nnz = static_cast<std::size_t>(system_.rowStart.back());
-  system_.columns.resize(nnz);
-  system_.values.resize(nnz);
+  resizeForOverwrite(system_.columns, nnz);  // every entry is written below
+  resizeForOverwrite(system_.values, nnz);
   system_.rhs.resize(static_cast<std::size_t>(nMat));
 
   const int dim = ps.dimension;
@@ -251,8 +252,8 @@ void ImplicitViscousStep::assembleCoupled(int dim, const std::vector<Vec3>& rhs)
     for (std::size_t d = 0; d < D; ++d) coupled_.rowStart[a * D + d + 1] = coupled_.rowStart[a * D + d] + length;
   }
   const auto nnz = static_cast<std::size_t>(coupled_.rowStart.back());
-  coupled_.columns.resize(nnz);
-  coupled_.values.resize(nnz);
+  resizeForOverwrite(coupled_.columns, nnz);  // every entry is written below
+  resizeForOverwrite(coupled_.values, nnz);
   coupled_.rhs.resize(n * D);
 #pragma omp parallel for schedule(static)
   for (long ia = 0; ia < static_cast<long>(n); ++ia) {

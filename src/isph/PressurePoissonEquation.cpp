@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "core/Log.hpp"
+#include "core/ResizeForOverwrite.hpp"
 #include "isph/PpeDirichletParticles.hpp"
 #include "isph/WallBoundaryPressure.hpp"
 #include "isph/parallel/GhostExchange.hpp"
@@ -57,8 +58,8 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     system_.rowStart[static_cast<std::size_t>(r) + 1] = system_.rowStart[static_cast<std::size_t>(r)] + count;
   }
   const auto nnz = static_cast<std::size_t>(system_.rowStart.back());
-  system_.columns.resize(nnz);
-  system_.values.resize(nnz);
+  resizeForOverwrite(system_.columns, nnz);  // every entry is written below
+  resizeForOverwrite(system_.values, nnz);
   system_.rhs.resize(static_cast<std::size_t>(nRows));
 
   const double h = kernel.h();

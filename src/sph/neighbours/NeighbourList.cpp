@@ -1,6 +1,7 @@
 #include "sph/neighbours/NeighbourList.hpp"
 
 #include "sph/neighbours/CellGrid.hpp"
+#include "core/ResizeForOverwrite.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,9 +54,9 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   start.assign(static_cast<std::size_t>(n) + 1, 0);
   for (long a = 0; a < n; ++a) start[static_cast<std::size_t>(a) + 1] = start[static_cast<std::size_t>(a)] + count[static_cast<std::size_t>(a) + 1];
   const std::size_t nPairs = static_cast<std::size_t>(start.back());
-  index.resize(nPairs);
-  W.resize(nPairs);
-  F.resize(nPairs);
+  resizeForOverwrite(index, nPairs);  // every pair is written below
+  resizeForOverwrite(W, nPairs);
+  resizeForOverwrite(F, nPairs);
 
 #pragma omp parallel for schedule(static)
   for (long a = 0; a < n; ++a) {
