@@ -77,7 +77,7 @@ void checkDistributedSparseSystem(const SparseSystem& A) {
                            "hold {} rows",
                            A.firstRow, rows.first));
   }
-  std::vector<long> columns;
+  std::vector<GlobalIndex> columns;
   for (int i = 0; i < A.nRows(); ++i) {
     columns.assign(A.columns.begin() + A.rowStart[i], A.columns.begin() + A.rowStart[i + 1]);
     std::sort(columns.begin(), columns.end());

@@ -12,10 +12,16 @@
 
 namespace isph {
 
+// A global row or column number: hypre's HYPRE_BigInt, which Debian builds as int (32 bits:
+// hypre itself then takes at most 2^31 - 1 rows), so that the columns go to hypre as they are,
+// without a copy (at 640k particles the PPE's columns as long took 107 MB, their copy for
+// hypre another 54 MB; doc/notes/scaling.md).
+using GlobalIndex = int;
+
 struct SparseSystem {
   long firstRow = 0;          // global index of local row 0 (a HYPRE_BigInt range)
   std::vector<int> rowStart;  // size nRows + 1; row i is entries [rowStart[i], rowStart[i+1])
-  std::vector<long> columns;  // global column indices
+  std::vector<GlobalIndex> columns;  // global column indices
   std::vector<double> values;
   std::vector<double> rhs;
   bool symmetricHint = true;  // the assembler's promise that A is symmetric (PCG is valid)

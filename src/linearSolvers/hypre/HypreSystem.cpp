@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 
 #include "core/Error.hpp"
 #include "linearSolvers/hypre/HypreError.hpp"
@@ -44,7 +45,15 @@ HypreMatrix::HypreMatrix(const SparseSystem& A) {
     }
   }
   const std::vector<HYPRE_BigInt> rows = rowNumbers(A.firstRow, rowSizes.size());
-  const std::vector<HYPRE_BigInt> cols(A.columns.begin(), A.columns.end());
+  // The columns as they are where hypre's global index is ours (Debian's int), else a copy.
+  std::vector<HYPRE_BigInt> converted;
+  const HYPRE_BigInt* cols = nullptr;
+  if constexpr (std::is_same_v<HYPRE_BigInt, GlobalIndex>) {
+    cols = A.columns.data();
+  } else {
+    converted.assign(A.columns.begin(), A.columns.end());
+    cols = converted.data();
+  }
 
   HYPRE_IJMatrix ij = nullptr;
   hypreCheck(HYPRE_IJMatrixCreate(MPI_COMM_WORLD, first, last, first, last, &ij),
@@ -56,7 +65,7 @@ HypreMatrix::HypreMatrix(const SparseSystem& A) {
   hypreCheck(HYPRE_IJMatrixInitialize(ij), "HYPRE_IJMatrixInitialize");
   // All rows in one call, straight from the CSR arrays (ncols is not const in hypre's API).
   hypreCheck(
-      HYPRE_IJMatrixSetValues(ij, n, rowSizes.data(), rows.data(), cols.data(), A.values.data()),
+      HYPRE_IJMatrixSetValues(ij, n, rowSizes.data(), rows.data(), cols, A.values.data()),
       "HYPRE_IJMatrixSetValues");
   hypreCheck(HYPRE_IJMatrixAssemble(ij), "HYPRE_IJMatrixAssemble");
   void* object = nullptr;
