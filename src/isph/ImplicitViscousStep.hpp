@@ -48,7 +48,7 @@ class ImplicitViscousStep {
 
   // u* for the material particles (walls and dummies: 0); one performance per component.
   // lagged: a further body force per unit mass for each material particle (−∇pⁿ/ρ of the
-  // incremental projection, see ProjectionSolver), or empty.
+  // incremental projection, stages/IncrementalProjection.hpp), or empty.
   std::vector<SolverPerformance> solve(const ParticleSystem& ps, const MaterialTable& materials,
                                        const std::vector<double>& eta, const WallFriction* friction, const Vec3& g,
                                        double dt, double h, const std::vector<Vec3>& lagged,

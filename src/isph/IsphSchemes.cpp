@@ -2,19 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "core/dictionary/RequireRange.hpp"
+
 namespace isph {
-
-namespace {
-
-void requireRange(const Dictionary& d, const char* key, double value, double lo, double hi) {
-  if (value < lo || value > hi) {
-    const Entry* e = d.findEntry(key);
-    fatalIOError(e ? e->location() : d.location(),
-                 fmt::format("keyword '{}' in {}: {} is outside the valid range [{}, {}]", key, d.name(), value, lo, hi));
-  }
-}
-
-}  // namespace
 
 const char* toString(PpeSource s) {
   switch (s) {
@@ -115,45 +105,15 @@ void readStepControls(const Dictionary& d, IsphSchemes& s) {
   ws.checkKeywords();
 }
 
-// The deviatoric term, and the incremental projection with its lagged pressure and the form
-// of Eq. 11 (the projection only).
-void readViscousAndProjection(const Dictionary& d, IsphSchemes& s) {
-  const bool wcsph = s.method == Method::wcsph;
-  s.viscousTerm = d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, wcsph ? "explicit" : "implicit") ==
-                          "explicit"
-                      ? ViscousTerm::explicit_
-                      : ViscousTerm::implicit;
-  if (wcsph && s.viscousTerm == ViscousTerm::implicit) {
+// The weakly-compressible method's deviatoric term is explicit (the projection's is a stage:
+// stages/DeviatoricTerm.hpp).
+void readWeaklyCompressibleViscousTerm(const Dictionary& d) {
+  if (d.getChoiceOrDefault("viscousTerm", {"implicit", "explicit"}, "explicit") == "implicit") {
     fatalIOError(d.findEntry("viscousTerm")->location(),
                  fmt::format("keyword 'viscousTerm' in {}: 'implicit' needs 'method isph'; the weakly-compressible "
                              "method (method wcsph) is explicit: use 'viscousTerm explicit' or remove the entry",
                              d.name()));
   }
-  if (wcsph) return;
-  const std::string incremental = d.getChoiceOrDefault("incrementalPressure", {"none", "granular", "all"}, "none");
-  s.incrementalPressure = incremental == "none" ? MaterialScope::none
-                          : incremental == "all" ? MaterialScope::all
-                                                 : MaterialScope::granular;
-
-  const Dictionary lp = d.subDictOrEmpty("laggedPressure");
-  s.laggedForm = lp.getChoiceOrDefault("form", {"pairs", "gradient"}, "pairs") == "gradient"
-                     ? LaggedPressureForm::gradient
-                     : LaggedPressureForm::pairs;
-  s.laggedSmoothing = lp.getOrDefault("smoothing", s.laggedSmoothing);
-  requireRange(lp, "smoothing", s.laggedSmoothing, 0, 10);
-  if (s.laggedForm == LaggedPressureForm::pairs && s.laggedSmoothing > 0) {
-    fatalIOError(lp.findEntry("smoothing")->location(),
-                 fmt::format("keyword 'smoothing' in {}: the pair form uses pⁿ as it is; smoothing needs "
-                             "'form gradient'",
-                             lp.name()));
-  }
-  lp.checkKeywords();
-
-  s.pressureGradient = d.getChoiceOrDefault("pressureGradient", {"renormalised", "symmetric"}, "renormalised") ==
-                               "symmetric"
-                           ? PressureGradientForm::symmetric
-                           : PressureGradientForm::renormalised;
-  if (const Entry* e = d.findEntry("pressureGradient")) s.pressureGradientAt = e->location();
 }
 
 void readWallFriction(const Dictionary& d, IsphSchemes& s) {
@@ -184,9 +144,9 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   s.tensionCutoff = d.getOrDefault("tensionCutoff", s.tensionCutoff);
   readShifting(d, s);
   readStepControls(d, s);
-  readViscousAndProjection(d, s);
   readWallFriction(d, s);
-  if (s.method == Method::wcsph) {  // no PPE, no implicit solve: the projection's entries are not read
+  if (s.method == Method::wcsph) {
+    readWeaklyCompressibleViscousTerm(d);  // no PPE, no implicit solve: the projection's entries are not read
     for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
       if (const Entry* e = d.findEntry(key)) {
         warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
@@ -196,7 +156,6 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
       }
     }
   }
-  d.checkKeywords();
   return s;
 }
 
@@ -249,36 +208,7 @@ std::string IsphSchemes::describe() const {
              : std::string("    minimum distance: off\n");
   out += fmt::format("    time step: force factor {}, viscous factor {}, growth <= {}x per step\n", forceFactor,
                      viscousFactor, maxGrowth);
-  out += fmt::format("    deviatoric term (where a material has one): {}\n",
-                     viscousTerm == ViscousTerm::implicit
-                         ? fmt::format("semi-implicit (Morris operator, one PCG solve per component, or one for all "
-                                       "components where a Coulomb wall drag acts, repeated up to {} times "
-                                       "until the stick/slip state of every particle on a wall settles; no "
-                                       "viscous time-step limit)",
-                                       frictionPasses)
-                         : std::string("explicit (Morris operator; viscous time-step limit)"));
-  if (viscousTerm == ViscousTerm::implicit) {
-    out += fmt::format("    pressure in the viscous solve: {}\n",
-                       incrementalPressure == MaterialScope::none
-                           ? "none (Eq. 11 corrects with the whole pressure)"
-                           : std::string("incremental projection (a second viscous solve sees the last pressure "
-                                         "force; a second PPE corrects it with the increment)") +
-                                 (incrementalPressure == MaterialScope::granular ? " in scenes with a granular material"
-                                                                                 : ""));
-    if (incrementalPressure != MaterialScope::none) {
-      out += laggedForm == LaggedPressureForm::pairs
-                 ? std::string("    lagged pressure force: symmetric pair form; the friction walls' pairs give the "
-                               "normal reaction for the Coulomb friction\n")
-                 : fmt::format("    lagged pressure force: the renormalised gradient of Eq. 11 of p^n{}; Coulomb "
-                               "friction from the wall pressures\n",
-                               laggedSmoothing > 0 ? fmt::format(" after {} Shepard pass{}", laggedSmoothing,
-                                                                 laggedSmoothing > 1 ? "es" : "")
-                                                   : std::string());
-    }
-  }
-  if (pressureGradient == PressureGradientForm::symmetric) {
-    out += "    pressure gradient of Eq. 11: symmetric, sum m_b (p_a/rho_a^2 + p_b/rho_b^2) grad W (as the paper)\n";
-  }
+  if (method == Method::wcsph) out += "    deviatoric term (where a material has one): explicit (Morris operator; viscous time-step limit)\n";
   if (frictionNormal == FrictionNormal::hydrostatic) {
     out += "    Coulomb wall friction: tan delta times the material's pressure carried hydrostatically to each wall "
            "particle\n";

@@ -33,21 +33,14 @@
 //   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
 //   collision        { distance 0.5; }   // in dx: material pairs closer than this are
 //                                    // separated as inelastic contacts (0: off)
-//   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6 (only when a
-//                                    // material has one): semi-implicit solve or explicit sum
-//   incrementalPressure none;        // | granular | all: with the implicit term, the viscous
-//                                    // solve sees the pressure force of the last step and
-//                                    // Eq. 11 corrects with the change (solvers/ProjectionSolver.hpp), in
-//                                    // scenes with a granular material or in all; default none
-//                                    // (slidingBlock uses granular)
-//   laggedPressure   { form pairs; smoothing 0; }  // | gradient: with incrementalPressure,
-//                                    // the force of the last pressure that the viscous solve sees:
-//                                    // the symmetric pair form, or the renormalised gradient of
-//                                    // Eq. 11 of pⁿ smoothed by N Shepard passes (LaggedPressure.hpp)
-//   pressureGradient renormalised;   // | symmetric: Eq. 11 as the renormalised difference
-//                                    // L_a Σ V_b (p_b − p_a)∇W (VelocityCorrection.hpp), or as the
-//                                    // paper writes it, Σ m_b (p_a/ρ_a² + p_b/ρ_b²)∇W, whose pairs
-//                                    // repel under pressure (walls on their lattice positions)
+//   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6, a stage read by
+//                                    // stages/DeviatoricTerm.hpp (and refused as implicit by wcsph)
+//   incrementalPressure none;        // | granular | all: the projection, a stage read by
+//                                    // stages/Projection.hpp (plain or incremental)
+//   laggedPressure   { form pairs; smoothing 0; }  // | gradient: the incremental projection's
+//                                    // (stages/IncrementalProjection.hpp)
+//   pressureGradient renormalised;   // | symmetric: the form of Eq. 11 in the plain projection
+//                                    // (stages/PlainProjection.hpp)
 //   wallFriction     { slipSpeed 1e-5; passes 10; normalForce wallPressure; }
 //                                    // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
@@ -60,12 +53,9 @@
 //                                    // incrementalPressure and laggedPressure pairs it is the
 //                                    // wall pairs' normal reaction whatever this says
 //
-// Settings that exclude each other are a fatal error at the entry that would be ignored
-// (SchemeConflicts.hpp, checked by the solver after reading):
-// incrementalPressure with viscousTerm explicit; laggedPressure with incrementalPressure none;
-// pressureGradient symmetric where the incremental projection acts (incrementalPressure all, or
-// granular in a scene with a granular material); wallFriction normalForce hydrostatic with
-// the incremental projection's pair form.
+// The stages refuse, at the entry's line, the settings of another stage that they would
+// ignore (the incremental projection with viscousTerm explicit, laggedPressure without it,
+// pressureGradient symmetric or wallFriction's normalForce hydrostatic where it acts).
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -74,12 +64,8 @@ namespace isph {
 
 enum class Method { isph, wcsph };
 enum class PpeSource { densityInvariant, divergence, mixed };
-enum class ViscousTerm { implicit, explicit_ };
 enum class CompressedSurface { none, granular, all };
-enum class MaterialScope { none, granular, all };  // which materials a scheme applies to
-enum class LaggedPressureForm { pairs, gradient };
 enum class FrictionNormal { wallPressure, hydrostatic };       // the wall stress the Coulomb capacity is tan δ times
-enum class PressureGradientForm { renormalised, symmetric };  // the form of Eq. 11
 
 // The weakly-compressible method's own settings (WeaklyCompressibleStep), `wcsph { }`.
 struct WcsphSettings {
@@ -130,16 +116,13 @@ struct IsphSchemes {
   double wallSafeguardDistance = 0.5;  // in dx
   double collisionDistance = 0.5;      // in dx; 0: off
 
-  ViscousTerm viscousTerm = ViscousTerm::implicit;
-  MaterialScope incrementalPressure = MaterialScope::none;
-  LaggedPressureForm laggedForm = LaggedPressureForm::pairs;
-  int laggedSmoothing = 0;  // Shepard passes over pⁿ (gradient form)
   double frictionSlipSpeed = -1;  // m/s; < 0: not given (the solver takes 1e-4 sqrt(|g| dx))
   int frictionPasses = 10;
   FrictionNormal frictionNormal = FrictionNormal::wallPressure;
-  PressureGradientForm pressureGradient = PressureGradientForm::renormalised;
-  SourceLocation pressureGradientAt;  // the entry, for the solver's check against the scene
 
+  // The shared settings; the stages' entries (viscousTerm, incrementalPressure, laggedPressure,
+  // pressureGradient) are read by the stages, and the solver checks for unknown keywords once
+  // they have been (Dictionary::checkKeywords).
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.
   std::string describe() const;

@@ -1,5 +1,5 @@
 #pragma once
-// The pressure that the viscous solve of the incremental projection sees (solvers/ProjectionSolver.hpp),
+// The pressure that the viscous solve of the incremental projection sees (stages/IncrementalProjection.hpp),
 // in the form chosen by isphSchemes `laggedPressure { form pairs | gradient; smoothing N; }`:
 //
 // - pairs (the default): the symmetric pair force −Σ_b m_b (p_a/ρ_a² + p_b/ρ_b²)∇_a W_ab of

@@ -56,7 +56,7 @@ class PressurePoissonEquation {
   SolverPerformance solve(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
                           const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);
 
-  // The incremental projection (solvers/ProjectionSolver.hpp): solves for δp = p^{n+1} − pⁿ with u* from a
+  // The incremental projection (stages/IncrementalProjection.hpp): solves for δp = p^{n+1} − pⁿ with u* from a
   // predictor that held the force of pⁿ, δp = −pⁿ on the free surface (p^{n+1} = 0 there) and
   // the walls' condition on the increment (wallPressureIncrementOfIncrement). Sets the
   // material's ps.cloud.p to pⁿ + δp (tension cut-off as configured) and `increment` to

@@ -138,7 +138,7 @@ TEST_F(ColumnCollapse, DISABLED_StaticWedgeAgainstTheWall) {
 }
 
 // The incremental projection with the lagged pressure in the gradient form of Eq. 11
-// (solvers/ProjectionSolver.hpp, LaggedPressure.hpp): the viscous solve sees the force of the last
+// (stages/IncrementalProjection.hpp, LaggedPressure.hpp): the viscous solve sees the force of the last
 // pressure, so the splitting error of the plain projection, which makes the rods behind the
 // failure surface creep at several mm/s (the corner settles by 6.8 mm on average with the
 // case's default schemes), is gone where the pressure needs no increment. The wedge against

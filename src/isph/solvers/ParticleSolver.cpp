@@ -11,7 +11,6 @@
 #include "isph/Gravity.hpp"
 #include "isph/ParticleCollision.hpp"
 #include "isph/ParticleShifting.hpp"
-#include "isph/SchemeConflicts.hpp"
 #include "isph/StartupChecks.hpp"
 #include "isph/WallPenetrationGuard.hpp"
 #include "isph/parallel/GhostExchange.hpp"
@@ -63,10 +62,9 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   if (state_) info("    solver state (step {}) read from {}/uniform/isphState", state_->stepsTaken, time.timeName());
 
   info("\nReading system/isphSchemes");
-  const Dictionary schemesDict = Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes");
-  kernel_ = makeKernel(schemesDict, ps_.cloud.properties.spacing, dim);
-  schemes_ = IsphSchemes::read(schemesDict, dim);
-  checkSchemeConflicts(schemesDict, schemes_);
+  schemesDict_ = Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes");
+  kernel_ = makeKernel(schemesDict_, ps_.cloud.properties.spacing, dim);
+  schemes_ = IsphSchemes::read(schemesDict_, dim);
   materials_ = std::make_unique<MaterialTable>(time.path() / "constant" / "materialProperties",
                                                ps_.cloud.properties.materials);
   g_ = readGravity(time.path());
@@ -129,7 +127,8 @@ void ParticleSolver::finishConstruction() {
              : "slides freely (no friction angle)");
   }
   info("    gravity ({} {} {}) m/s^2", g_.x(), g_.y(), g_.z());
-  infoLine(schemes_.describe());
+  infoLine(schemes_.describe() + describeStages());
+  schemesDict_.checkKeywords();  // (the stages have read theirs)
 }
 
 StepState ParticleSolver::currentState() const {
@@ -178,14 +177,6 @@ void ParticleSolver::initialiseWallPressure() {
   std::vector<Vec3> atRest(ps_.size(), Vec3::Zero());
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) atRest[a] = ps_.cloud.U[a] + g_;  // u* = u + g dt, dt = 1
   walls_->settle(*kernel_, atRest);
-}
-
-void ParticleSolver::applyExplicitFriction(double dt) {
-  if (!friction_->active()) return;
-  std::vector<Vec3> applied;
-  friction_->applyExplicit(ps_, dt, ustar_, &applied);
-  exchangeGhosts(ps_, applied);  // parallel
-  wallFriction_ = friction_->wallTraction(ps_, applied);
 }
 
 const std::vector<SymmTensor>* ParticleSolver::deviatoricStress() { return viscousStress_->tau(stepsTaken_); }

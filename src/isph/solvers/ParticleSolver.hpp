@@ -96,9 +96,11 @@ class ParticleSolver {
   virtual void afterWrite() {}
   // The wall patches' boundary condition for the log ("Neumann wall pressure").
   virtual std::string wallCondition() const = 0;
+  // The log lines of the method's stages, after the shared schemes' (empty: none).
+  virtual std::string describeStages() const { return {}; }
 
   // The end of the derived constructor: the solver state of a restart, then the log of the
-  // active models and schemes.
+  // active models and schemes, and the warnings for entries of system/isphSchemes no one read.
   void finishConstruction();
   // A field of the start time's cloud in the particles' order, or empty if it was not written
   // (the cloud is reordered after reading). Before finishConstruction only.
@@ -109,8 +111,6 @@ class ParticleSolver {
     return inWrittenOrder(readField<T>(file, writtenIds_.size()));
   }
 
-  // The explicit Coulomb friction on u* and the walls' share of it (wallFriction_).
-  void applyExplicitFriction(double dt);
   // Whether this step reorders the material particles along cells (every reorderInterval-th).
   bool reorderDue() { return stepsSinceReorder_++ % reorderInterval == 0; }
   // After the particles moved: shifting, minimum distance, wall safeguard, speed, domain.
@@ -120,6 +120,7 @@ class ParticleSolver {
 
   std::optional<StepState> state_;  // a restart's solver state (StepState.hpp), else none;
                                     // released by finishConstruction
+  Dictionary schemesDict_{"system/isphSchemes"};  // the stages read their entries from it
   IsphSchemes schemes_;
   std::unique_ptr<MaterialTable> materials_;
   std::unique_ptr<Kernel> kernel_;

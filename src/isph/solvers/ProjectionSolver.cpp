@@ -4,11 +4,6 @@
 
 #include "core/Log.hpp"
 #include "isph/ElasticPlasticStress.hpp"
-#include "isph/IntermediateVelocity.hpp"
-#include "isph/LaggedPressure.hpp"
-#include "isph/SchemeConflicts.hpp"
-#include "isph/VelocityCorrection.hpp"
-#include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {
 
@@ -19,7 +14,10 @@ const bool registered = SolverRegistry::add(
 
 }  // namespace
 
-ProjectionSolver::ProjectionSolver(const Time& time, bool parallel) : ParticleSolver(time, parallel) {
+ProjectionSolver::ProjectionSolver(const Time& time, bool parallel)
+    : ParticleSolver(time, parallel),
+      context_{ps_,      *materials_, *kernel_,        correction_, *freeSurface_, *walls_,
+               *friction_, *viscousStress_, timer_, g_,           wallFriction_} {
   elasticPlasticSpeeds(*materials_, Method::isph);  // FatalError: elasticPlastic materials are not for this method
   info("\nReading system/isphSolution");
   const Dictionary solution = Dictionary::readOptionalFile(time.path() / "system" / "isphSolution", "system/isphSolution");
@@ -31,73 +29,23 @@ ProjectionSolver::ProjectionSolver(const Time& time, bool parallel) : ParticleSo
   }
   ppe_ = std::make_unique<PressurePoissonEquation>(schemes_.ppe, schemes_.tensionCutoff, makeLinearSolver(solution.subDictOrEmpty("p"), "p"),
                                                    std::move(keepCompressed));
-  if (materials_->anyDeviatoricStress() && schemes_.viscousTerm == ViscousTerm::implicit) {
-    viscous_ = std::make_unique<ImplicitViscousStep>(solution.subDictOrEmpty("U"), ps_.cloud.properties.dimension,
-                                                     schemes_.frictionPasses);
-    incremental_ = schemes_.incrementalPressure == MaterialScope::all ||
-                   (schemes_.incrementalPressure == MaterialScope::granular && materials_->anyGranular());
-  }
+  const StageSetup setup{schemesDict_, solution, schemes_, *materials_, ps_.cloud.properties.dimension};
+  deviatoric_ = DeviatoricTerm::New(setup);
+  projection_ = Projection::New(setup, *deviatoric_);
   solution.checkKeywords({"U"});
-  checkSchemesForScene(schemes_, incremental_);
   finishConstruction();
-}
-
-void ProjectionSolver::saveMethodState(StepState& s) const {
-  if (viscous_) viscous_->saveState(s);
-}
-
-void ProjectionSolver::restoreMethodState(const StepState& s) {
-  if (viscous_) viscous_->restoreState(s);
 }
 
 void ProjectionSolver::afterWrite() {
   ppe_->renumbered();
-  if (viscous_) viscous_->renumbered();
+  deviatoric_->renumbered();
 }
 
 std::string ProjectionSolver::preconditionerSummary() const {
   std::string s = fmt::format("AMG hierarchies built for p: {} of {} solves", ppe_->solver().preconditionersBuilt(),
                               ppe_->solver().solvesDone());
-  if (viscous_) {
-    s += fmt::format("\nAMG hierarchies built for U: {} of {} solves", viscous_->preconditionersBuilt(),
-                     viscous_->solvesDone());
-    if (viscous_->frictionSolves() > 0) {
-      s += fmt::format("\nBed friction: stick/slip states settled in {} of {} steps ({:.2f} passes per step, at most {})",
-                       viscous_->frictionSolvesSettled(), viscous_->frictionSolves(),
-                       static_cast<double>(viscous_->frictionPassesDone()) / viscous_->frictionSolves(),
-                       viscous_->maxFrictionPasses());
-    }
-  }
-  return s;
-}
-
-void ProjectionSolver::laggedPressure(double dt, std::vector<Vec3>& reaction) {
-  // The incremental projection (see the header): the viscous solve sees the pressure force of
-  // the last step, −∇pⁿ/ρ (the walls' condition of a material at rest, ũ = uⁿ + dt g).
-  lagged_.resize(ps_.nMaterial);
-  std::vector<Vec3> resting(ps_.cloud.U);
-  for (std::size_t a = 0; a < ps_.nMaterial; ++a) resting[a] += dt * g_;
-  const long n = static_cast<long>(ps_.nMaterial);
-  if (schemes_.laggedForm == LaggedPressureForm::gradient) {
-    // The gradient of Eq. 11 of p̃ (LaggedPressure.hpp); the PPE then solves for p^{n+1} − p̃.
-    if (schemes_.laggedSmoothing > 0) {
-      const std::vector<double> smooth = smoothedPressure(ps_, *kernel_, freeSurface_->flags(), schemes_.laggedSmoothing);
-      std::copy(smooth.begin(), smooth.end(), ps_.cloud.p.begin());
-    }
-#pragma omp parallel for schedule(static)
-    for (long ia = 0; ia < n; ++ia) {
-      const auto a = static_cast<std::size_t>(ia);
-      lagged_[a] = -pressureGradient(ps_, correction_, resting, g_, a, dt) / ps_.rho[a];
-    }
-  } else {
-    reaction.assign(ps_.nMaterial, Vec3::Zero());
-#pragma omp parallel for schedule(static)
-    for (long ia = 0; ia < n; ++ia) {
-      const auto a = static_cast<std::size_t>(ia);
-      lagged_[a] = laggedPressureForce(ps_, *kernel_, resting, g_, a, dt, &reaction[a]);
-    }
-  }
-  exchangeGhosts(ps_, lagged_);  // parallel: the walls' pressure reads it at ghosts
+  const std::string u = deviatoric_->summary();
+  return u.empty() ? s : s + "\n" + u;
 }
 
 void ProjectionSolver::intermediateVelocity(const Time& time, StepReport& report) {
@@ -105,56 +53,23 @@ void ProjectionSolver::intermediateVelocity(const Time& time, StepReport& report
   {
     auto t = timer_.scope("rheology");
     viscousStress_->update();
-    lagged_.clear();
-    std::vector<Vec3> reaction;
-    if (incrementalNow()) laggedPressure(dt, reaction);
+    std::vector<Vec3> reaction;  // the friction walls' normal reaction, where the lagged force gives it
+    projection_->beforePredictor(context_, dt, freshStart_ && stepsTaken_ <= 1, reaction);
     friction_->update(ps_, reaction.empty() ? nullptr : &reaction);
   }
-  if (viscous_) {
-    const auto perf = viscous_->solve(ps_, *materials_, viscousStress_->eta(), friction_.get(), g_, dt, kernel_->h(),
-                                      lagged_, ustar_);
-    exchangeGhosts(ps_, ustar_);  // parallel: solved for the own particles
-    report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
-    timer_.add("viscous assembly", viscous_->assemblySeconds());
-    for (const auto& perf : report.viscous) {
-      timer_.add("viscous assembly", perf.assemblySeconds);
-      timer_.add("viscous setup", perf.setupSeconds);
-      timer_.add("viscous solve", perf.solveSeconds);
-    }
-    maxViscousAcceleration_ = 0;
-    if (friction_->active()) {
-      std::vector<Vec3> force = viscous_->frictionForce();
-      if (!force.empty()) {  // parallel: solved for the own rows
-        force.resize(ps_.nMaterial, Vec3::Zero());
-        exchangeGhosts(ps_, force);
-      }
-      wallFriction_ = friction_->wallTraction(ps_, force);
-    }
-    auto t = timer_.scope("rheology");
-    viscousStress_->keepActing(&ustar_, stepsTaken_);  // u* with its ghosts (exchanged above)
-    return;
-  }
-  auto t = timer_.scope("intermediate velocity");
-  viscousStress_->keepActing(nullptr, stepsTaken_);
-  maxViscousAcceleration_ =
-      IntermediateVelocity::compute(ps_, *materials_, viscousStress_->eta(), g_, dt, kernel_->h(), ustar_);
-  applyExplicitFriction(dt);
-  exchangeGhosts(ps_, ustar_);  // parallel
+  maxViscousAcceleration_ = deviatoric_->predict(context_, dt, stepsTaken_, projection_->lagged(), ustar_, report);
+}
+
+void ProjectionSolver::solvePressure(double dt, StepReport& report) {
+  report.ppe = projection_->solvePressure(context_, *ppe_, ustar_, dt);
+  timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
+  timer_.add("PPE setup", report.ppe.setupSeconds);
+  timer_.add("PPE solve", report.ppe.solveSeconds);
 }
 
 void ProjectionSolver::correctAndMove(double dt) {
   std::vector<Vec3> oldU(ps_.cloud.U.begin(), ps_.cloud.U.begin() + static_cast<long>(ps_.nMaterial));
-  if (!lagged_.empty()) {
-    correctVelocityIncrement(ps_, correction_, ustar_, increment_, dt);
-    exchangeGhosts(ps_, ps_.cloud.U);  // parallel
-    std::vector<Vec3> ustarTotal(ustar_);  // the walls' pressure from the whole condition
-    for (std::size_t a = 0; a < ps_.nMaterial; ++a) ustarTotal[a] -= dt * lagged_[a];
-    walls_->update(ustarTotal, dt);
-  } else {
-    correctVelocity(ps_, correction_, ustar_, g_, dt,
-                    schemes_.pressureGradient == PressureGradientForm::symmetric ? kernel_.get() : nullptr);
-    exchangeGhosts(ps_, ps_.cloud.U);  // parallel
-  }
+  projection_->correct(context_, ustar_, dt);
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) {
     ps_.cloud.positions[a] += 0.5 * dt * (oldU[a] + ps_.cloud.U[a]);
   }
@@ -170,7 +85,7 @@ void ProjectionSolver::findNeighbours(const Time& time) {
   if (reorder) {
     if (!distributed_) reorderMaterialParticles(ps_, kernel_->supportRadius());
     ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
-    if (viscous_) viscous_->renumbered();
+    deviatoric_->renumbered();
   }
   ps_.neighbours.build(ps_.cloud.positions, *kernel_);
 }
@@ -181,17 +96,6 @@ void ProjectionSolver::correctKernels(StepReport& report) {
   freeSurface_->detect(ps_);
   report.freeSurface = freeSurface_->nSurfaceMaterial();
   walls_->prepare(freeSurface_->flags());
-}
-
-void ProjectionSolver::solvePressure(double dt, StepReport& report) {
-  if (!lagged_.empty()) {  // the increment that the step applies to the predictor that saw pⁿ
-    report.ppe = ppe_->solveIncrement(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt, increment_);
-  } else {
-    report.ppe = ppe_->solve(ps_, *kernel_, correction_, ustar_, freeSurface_->flags(), g_, dt);
-  }
-  timer_.add("PPE assembly", ppe_->assemblySeconds() + report.ppe.assemblySeconds);
-  timer_.add("PPE setup", report.ppe.setupSeconds);
-  timer_.add("PPE solve", report.ppe.solveSeconds);
 }
 
 StepReport ProjectionSolver::step(const Time& time) {
@@ -206,8 +110,8 @@ StepReport ProjectionSolver::step(const Time& time) {
   correctKernels(report);  // renormalisation, free surface, the walls' state
   intermediateVelocity(time, report);  // Eq. 6
   if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
-    viscous_->renumbered();  // nothing has moved yet; a retry builds a fresh hierarchy for U
-    ps_.cloud.p = pStart_;   // (the lagged pressure's smoothing may have changed it)
+    deviatoric_->renumbered();  // nothing has moved yet; a retry builds a fresh hierarchy for U
+    ps_.cloud.p = pStart_;      // (the lagged pressure's smoothing may have changed it)
     return report;
   }
   solvePressure(dt, report);  // Eq. 10
@@ -215,9 +119,8 @@ StepReport ProjectionSolver::step(const Time& time) {
     ps_.cloud.p = pStart_;
     return report;
   }
-  if (lagged_.empty()) walls_->update(ustar_, dt);  // the walls' pressures of the step (p^{n+1})
   auto t = timer_.scope("velocity correction and shifting");
-  correctAndMove(dt);  // Eq. 11, x^{n+1}
+  correctAndMove(dt);  // Eq. 11 and the walls' pressures of the step, x^{n+1}
   finishStep(time, report);  // shifting, safeguards, domain
   return report;
 }

@@ -6,6 +6,7 @@
 
 #include "core/Log.hpp"
 #include "isph/IntermediateVelocity.hpp"
+#include "isph/stages/ExplicitDeviatoricTerm.hpp"
 
 namespace isph {
 
@@ -144,7 +145,7 @@ void WeaklyCompressibleSolver::advance(const Time& time, StepReport& report) {
   }
   // Coulomb friction, limited by the wall pressures (as the explicit projection step does).
   friction_->update(ps_);
-  applyExplicitFriction(dt);
+  applyExplicitFriction(*friction_, ps_, dt, ustar_, wallFriction_);
   maxAcceleration_ = 0;
   for (std::size_t a = 0; a < ps_.nMaterial; ++a) {  // symplectic Euler: u, then x with the new u
     maxAcceleration_ = std::max(maxAcceleration_, (ustar_[a] - ps_.cloud.U[a]).norm() / dt);
