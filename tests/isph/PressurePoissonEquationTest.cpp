@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "LatticeBlockForTest.hpp"
+#include "OpenTankForTest.hpp"
 #include "MaterialTableForTest.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "isph/KernelGradientCorrection.hpp"
@@ -33,91 +34,14 @@ namespace {
 
 using namespace isph;
 
-constexpr double dx = 0.01, rho = 1000, dt = 1e-3;
-constexpr int n = 12;  // material particles across and over the depth
-const Vec3 g(0, -9.81, 0);
+using test::dx, test::rho, test::n, test::g;
+constexpr double dt = 1e-3;
+using Tank = test::OpenTank;
 
 std::unique_ptr<LinearSolver> solverFrom(const std::string& entries) {
   const Dictionary dict = Dictionary::parse("p\n{\n" + entries + "\n}\n", "system/isphSolution");
   return makeLinearSolver(dict.subDict("p"), "p");
 }
-
-// The open tank: material particle j n + i at ((i + ½) dx, (j + ½) dx), the bed at y = 0 and
-// the side walls at x = 0 and x = n dx up to y = (n + 1) dx, as generateWallLayers builds
-// them for three layers (h = 1.3 dx: support 2.6 dx). `jitter`: each material particle moved by
-// up to this many dx in x and y (uniform, fixed seed), except the top row, the free surface,
-// if `flatSurface`.
-struct Tank {
-  std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", 1.3 * dx, 2);
-  std::unique_ptr<MaterialTable> materials;
-  ParticleSystem ps;
-  KernelGradientCorrection L;
-  std::vector<char> surface;  // the top row
-
-  explicit Tank(double jitter = 0, bool flatSurface = true) {
-    materials = test::materialTable("PressurePoissonEquationTest",
-                                    "water { model newtonian; rho 1000; nu 1e-6; }", {"water"});
-    ParticleCloud& c = ps.cloud;
-    c.properties.materials = {"water"};
-    c.properties.patches = {{"tank", 0.0}};
-    c.properties.spacing = dx;
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> shift(-jitter * dx, jitter * dx);
-    label id = 0;
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        Vec3 x((i + 0.5) * dx, (j + 0.5) * dx, 0);
-        if (jitter > 0 && (j < n - 1 || !flatSurface)) x += Vec3(shift(rng), shift(rng), 0);
-        c.push_back(x, id++, Vec3::Zero(), 0.0, 0, ParticleKind::material, -1, Vec3::Zero(),
-                    rho * dx * dx);
-      }
-    }
-    const double W = n * dx;
-    const int top = n + 1;  // the walls reach y = (n + 1) dx
-    auto wall = [&](double x, double y, const Vec3& normal) {
-      c.push_back(Vec3(x, y, 0), id++, Vec3::Zero(), 0.0, -1, ParticleKind::wall, 0, normal, 0);
-    };
-    auto dummy = [&](double x, double y) {
-      c.push_back(Vec3(x, y, 0), id++, Vec3::Zero(), 0.0, -1, ParticleKind::dummy, 0, Vec3::Zero(),
-                  0);
-    };
-    const double s = std::numbers::sqrt2 / 2;
-    wall(0, 0, Vec3(s, s, 0));  // the corners: the mean of their two faces' normals
-    wall(W, 0, Vec3(-s, s, 0));
-    for (int k = 1; k < n; ++k) wall(k * dx, 0, Vec3(0, 1, 0));
-    for (int k = 1; k <= top; ++k) {
-      wall(0, k * dx, Vec3(1, 0, 0));
-      wall(W, k * dx, Vec3(-1, 0, 0));
-    }
-    for (int l = 1; l <= 2; ++l) {
-      for (int k = 0; k <= n; ++k) dummy(k * dx, -l * dx);
-      for (int k = 0; k <= top; ++k) {
-        dummy(-l * dx, k * dx);
-        dummy(W + l * dx, k * dx);
-      }
-      // The arc of radius l dx about each inside corner, round(l π/2) parts, its ends on the
-      // bed's and the wall's layers (already placed).
-      const long parts = std::lround(l * std::numbers::pi / 2);
-      for (long m = 1; m < parts; ++m) {
-        const double angle =
-            std::numbers::pi / 2 * static_cast<double>(m) / static_cast<double>(parts);
-        const double ax = l * dx * std::cos(angle), ay = l * dx * std::sin(angle);
-        dummy(-ax, -ay);
-        dummy(W + ax, -ay);
-      }
-    }
-    initialiseParticleSystem(ps, *materials, *kernel);  // material first, in the order above
-    ps.neighbours.build(ps.cloud.positions, *kernel);
-    ps.frictionWall.assign(ps.size(), 0);  // frictionless: G_a = ρ g along the walls
-    ps.wallPullLimit.assign(ps.size(),
-                            0.0);  // the first step from p = 0 (the solver: pⁿ, 0 on the surface)
-    ps.wallTangentialGradient.assign(ps.nMaterial, Vec3(rho * g));
-    ps.cloud.p.assign(ps.size(), 0.0);
-    L.update(ps, true, 0.25);
-    surface.assign(ps.size(), 0);
-    for (int i = 0; i < n; ++i) surface[static_cast<std::size_t>((n - 1) * n + i)] = 1;
-  }
-};
 
 // Whether material particle a has a neighbour in `flags` (a Dirichlet particle).
 bool touches(const ParticleSystem& ps, std::size_t a, const std::vector<char>& flags) {

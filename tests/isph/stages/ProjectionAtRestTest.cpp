@@ -1,0 +1,141 @@
+// The projections (stages/PlainProjection.hpp, stages/IncrementalProjection.hpp) on water at
+// rest in the open tank (OpenTankForTest.hpp: a 12 × 12 lattice on a bed between side walls),
+// with the free surface found by the FreeSurfaceDetector, the walls' state by WallBoundary,
+// the PPE solved exactly (EigenLU) without the tension cut-off:
+//  - the plain projection from rest (u* = g dt): p^{n+1} = ρ g (H − y) to rounding (as the PPE's
+//    own test: measured 4.7e-13 ρ g H) and Eq. 11 in its renormalised form leaves every particle
+//    at rest: |u| is rounding (measured 8.5e-15 m/s against g dt = 9.8e-3 m/s; with
+//    `pressureGradient symmetric`, the paper's sum form, 9.9e-3 m/s, which fails the test), the
+//    bed's wall particles carry ρ g H;
+//  - the incremental projection from that state with the lagged pressure in the gradient form
+//    (laggedPressure { form gradient; }): the predictor sees −∇pⁿ/ρ = −g, u* = 0, the increment
+//    is zero and the water stays at rest with the same pressure (measured |g + lagged| 8.5e-12
+//    m/s², |δp| 9.9e-13 ρ g H, |u| 5.5e-15 m/s).
+// The tolerances, 1e-9 of ρ g H and of g dt, are rounding margins: the discretisation is exact
+// for this field (the first-order corrected Laplacian and gradient, the walls' linear
+// continuation), so there is no SPH error to allow for.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "../OpenTankForTest.hpp"
+#include "StageSetupForTest.hpp"
+#include "isph/FreeSurfaceDetector.hpp"
+#include "isph/stages/IncrementalProjection.hpp"
+#include "isph/stages/PlainProjection.hpp"
+
+namespace isph {
+namespace {
+
+using test::dx, test::g, test::n, test::rho;
+constexpr double dt = 1e-3;
+
+// The tank and the models a step's stages work on.
+struct TankStep {
+  test::OpenTank tank;
+  FreeSurfaceDetector freeSurface{1.5, 0.05, 0.5, fullLatticeNeighbourCount(*tank.kernel, dx, "square", 2),
+                                  tank.kernel->h()};
+  WallFriction friction{tank.ps, *tank.materials, g, 1e-5};
+  WallBoundary walls{tank.ps, *tank.materials, g, 0.25, friction.slidingMaterial()};
+  ViscousStress viscousStress{tank.ps, *tank.materials, tank.L, 0.25};
+  PhaseTimer timer;
+  std::vector<Vec3> wallFriction;
+  StepContext c{tank.ps, *tank.materials, *tank.kernel, tank.L, freeSurface, walls, friction, viscousStress,
+                timer, g,       wallFriction};
+  PressurePoissonEquation ppe{PpeSettings{}, false, exactSolver()};
+
+  TankStep() { startStep(); }
+
+  void startStep() {
+    freeSurface.detect(tank.ps);
+    walls.prepare(freeSurface.flags());
+  }
+  static std::unique_ptr<LinearSolver> exactSolver() {
+    const Dictionary d = Dictionary::parse("p { solver EigenLU; tolerance 1e-12; }\n", "system/isphSolution");
+    return makeLinearSolver(d.subDict("p"), "p");
+  }
+  double height() const { return (n - 0.5) * dx; }  // of the free-surface particles, where p = 0
+  double worstPressureError() const {
+    double worst = 0;
+    for (std::size_t a = 0; a < tank.ps.nMaterial; ++a) {
+      const double exact = rho * g.norm() * (height() - tank.ps.cloud.positions[a].y());
+      worst = std::max(worst, std::abs(tank.ps.cloud.p[a] - exact));
+    }
+    return worst;
+  }
+  double fastest() const {
+    double u = 0;
+    for (std::size_t a = 0; a < tank.ps.nMaterial; ++a) u = std::max(u, tank.ps.cloud.U[a].norm());
+    return u;
+  }
+};
+
+TEST(ProjectionAtRest, OnlyTheTopRowIsTheFreeSurface) {
+  TankStep s;
+  for (std::size_t a = 0; a < s.tank.ps.nMaterial; ++a) {
+    EXPECT_EQ(s.freeSurface.flags()[a], s.tank.surface[a]) << "material particle " << a;
+  }
+}
+
+TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPressure) {
+  TankStep s;
+  const test::StageSetupForTest setup("", "water");
+  PlainProjection plain(setup.setup());
+  std::vector<Vec3> reaction;
+  plain.beforePredictor(s.c, dt, false, reaction);
+  EXPECT_TRUE(plain.lagged().empty() && reaction.empty());
+  const std::vector<Vec3> ustar(s.tank.ps.size(), Vec3(dt * g));  // the predictor from rest
+  ASSERT_TRUE(plain.solvePressure(s.c, s.ppe, ustar, dt).converged);
+  plain.correct(s.c, ustar, dt);
+  const double pBed = rho * g.norm() * s.height();
+  std::printf("plain projection: max |p - rho g (H - y)| = %.3g of rho g H, max |u| = %.3g m/s (g dt = %.3g)\n",
+              s.worstPressureError() / pBed, s.fastest(), g.norm() * dt);
+  EXPECT_LT(s.worstPressureError(), 1e-9 * pBed);
+  EXPECT_LT(s.fastest(), 1e-9 * g.norm() * dt);
+  for (std::size_t b = s.tank.ps.wallBegin(); b < s.tank.ps.dummyBegin(); ++b) {
+    if (s.tank.ps.cloud.positions[b].y() == 0.0) {
+      EXPECT_NEAR(s.tank.ps.cloud.p[b], pBed, 1e-9 * pBed);
+    }
+  }
+}
+
+TEST(ProjectionAtRest, TheIncrementalProjectionWithTheGradientFormNeedsNoIncrementAtRest) {
+  TankStep s;
+  const test::StageSetupForTest setup("incrementalPressure all;\nlaggedPressure { form gradient; }\n", "water");
+  IncrementalProjection incremental(setup.setup());
+  // The first step of a fresh start is a plain one: it finds the hydrostatic pressure.
+  std::vector<Vec3> reaction;
+  incremental.beforePredictor(s.c, dt, true, reaction);
+  ASSERT_TRUE(incremental.lagged().empty());
+  const std::vector<Vec3> fromRest(s.tank.ps.size(), Vec3(dt * g));
+  ASSERT_TRUE(incremental.solvePressure(s.c, s.ppe, fromRest, dt).converged);
+  incremental.correct(s.c, fromRest, dt);
+  const std::vector<double> pFirst(s.tank.ps.cloud.p);
+  // The next step: the predictor sees −∇pⁿ/ρ = −g, so u* = uⁿ + dt (g − ∇pⁿ/ρ) = 0.
+  s.startStep();
+  incremental.beforePredictor(s.c, dt, false, reaction);
+  ASSERT_EQ(incremental.lagged().size(), s.tank.ps.nMaterial);
+  EXPECT_TRUE(reaction.empty()) << "the gradient form leaves the friction to the wall pressures";
+  std::vector<Vec3> ustar(s.tank.ps.size(), Vec3::Zero());
+  double worstLagged = 0;
+  for (std::size_t a = 0; a < s.tank.ps.nMaterial; ++a) {
+    ustar[a] = s.tank.ps.cloud.U[a] + dt * (g + incremental.lagged()[a]);
+    worstLagged = std::max(worstLagged, (incremental.lagged()[a] + g).norm());
+  }
+  ASSERT_TRUE(incremental.solvePressure(s.c, s.ppe, ustar, dt).converged);
+  incremental.correct(s.c, ustar, dt);
+  double worstIncrement = 0;
+  for (std::size_t a = 0; a < s.tank.ps.nMaterial; ++a)
+    worstIncrement = std::max(worstIncrement, std::abs(s.tank.ps.cloud.p[a] - pFirst[a]));
+  const double pBed = rho * g.norm() * s.height();
+  std::printf("incremental projection: max |lagged + g| = %.3g m/s^2, max |dp| = %.3g of rho g H, max |u| = %.3g m/s\n",
+              worstLagged, worstIncrement / pBed, s.fastest());
+  EXPECT_LT(worstLagged, 1e-9 * g.norm());
+  EXPECT_LT(worstIncrement, 1e-9 * pBed);
+  EXPECT_LT(s.worstPressureError(), 1e-9 * pBed);
+  EXPECT_LT(s.fastest(), 1e-9 * g.norm() * dt);
+}
+
+}  // namespace
+}  // namespace isph
