@@ -78,16 +78,22 @@ TEST(ProjectionAtRest, OnlyTheTopRowIsTheFreeSurface) {
   }
 }
 
+// The first step of a fresh start from rest: nothing lagged, u* = g dt (the predictor of water
+// at rest), the PPE and Eq. 11.
+void firstStep(Projection& projection, TankStep& s) {
+  std::vector<Vec3> reaction;
+  projection.beforePredictor(s.c, dt, true, reaction);
+  ASSERT_TRUE(projection.lagged().empty() && reaction.empty());
+  const std::vector<Vec3> fromRest(s.tank.ps.size(), Vec3(dt * g));
+  ASSERT_TRUE(projection.solvePressure(s.c, s.ppe, fromRest, dt).converged);
+  projection.correct(s.c, fromRest, dt);
+}
+
 TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPressure) {
   TankStep s;
   const test::StageSetupForTest setup("", "water");
   PlainProjection plain(setup.setup());
-  std::vector<Vec3> reaction;
-  plain.beforePredictor(s.c, dt, false, reaction);
-  EXPECT_TRUE(plain.lagged().empty() && reaction.empty());
-  const std::vector<Vec3> ustar(s.tank.ps.size(), Vec3(dt * g));  // the predictor from rest
-  ASSERT_TRUE(plain.solvePressure(s.c, s.ppe, ustar, dt).converged);
-  plain.correct(s.c, ustar, dt);
+  ASSERT_NO_FATAL_FAILURE(firstStep(plain, s));
   const double pBed = rho * g.norm() * s.height();
   std::printf("plain projection: max |p - rho g (H - y)| = %.3g of rho g H, max |u| = %.3g m/s (g dt = %.3g)\n",
               s.worstPressureError() / pBed, s.fastest(), g.norm() * dt);
@@ -105,15 +111,11 @@ TEST(ProjectionAtRest, TheIncrementalProjectionWithTheGradientFormNeedsNoIncreme
   const test::StageSetupForTest setup("incrementalPressure all;\nlaggedPressure { form gradient; }\n", "water");
   IncrementalProjection incremental(setup.setup());
   // The first step of a fresh start is a plain one: it finds the hydrostatic pressure.
-  std::vector<Vec3> reaction;
-  incremental.beforePredictor(s.c, dt, true, reaction);
-  ASSERT_TRUE(incremental.lagged().empty());
-  const std::vector<Vec3> fromRest(s.tank.ps.size(), Vec3(dt * g));
-  ASSERT_TRUE(incremental.solvePressure(s.c, s.ppe, fromRest, dt).converged);
-  incremental.correct(s.c, fromRest, dt);
+  ASSERT_NO_FATAL_FAILURE(firstStep(incremental, s));
   const std::vector<double> pFirst(s.tank.ps.cloud.p);
   // The next step: the predictor sees −∇pⁿ/ρ = −g, so u* = uⁿ + dt (g − ∇pⁿ/ρ) = 0.
   s.startStep();
+  std::vector<Vec3> reaction;
   incremental.beforePredictor(s.c, dt, false, reaction);
   ASSERT_EQ(incremental.lagged().size(), s.tank.ps.nMaterial);
   EXPECT_TRUE(reaction.empty()) << "the gradient form leaves the friction to the wall pressures";
