@@ -78,8 +78,7 @@ void ImplicitViscousStep::renumbered() {
 std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& ps, const MaterialTable& materials,
                                                           const std::vector<double>& eta,
                                                           const WallFriction* friction, const Vec3& g, double dt,
-                                                          double h, const std::vector<Vec3>& lagged,
-                                                          std::vector<Vec3>& ustar) {
+                                                          double h, std::vector<Vec3>& ustar) {
   const auto start = std::chrono::steady_clock::now();
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
@@ -105,8 +104,6 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
 
   const int dim = ps.dimension;
   std::vector<Vec3> rhs(static_cast<std::size_t>(nMat));
-  // The body force per unit mass of each row: gravity and the lagged pressure force, if any.
-  auto force = [&](std::size_t a) -> Vec3 { return lagged.empty() ? g : Vec3(g + lagged[a]); };
 #pragma omp parallel for schedule(static)
   for (long ia = 0; ia < nMat; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
@@ -114,7 +111,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
     const bool withWalls = materials[static_cast<std::size_t>(c.material[a])].wallContact() == WallContact::noSlip;
     auto pos = static_cast<std::size_t>(system_.rowStart[a]);
     const std::size_t diag = pos++;
-    const Vec3 fa = force(a);
+    const Vec3& fa = g;
     Vec3 r = ma * (c.U[a] / dt + fa);
     double diagonal = ma / dt;
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
@@ -158,7 +155,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
   frictionForce_.clear();
   const bool useKept = warmFromLastIncrement_ && keptDt_ > 0;
   for (std::size_t a = 0; a < n; ++a) {
-    ustar[a] = c.U[a] + dt * force(a);
+    ustar[a] = c.U[a] + dt * g;
     const auto id = static_cast<std::size_t>(c.origId[a]);
     if (useKept && id < keptIncrement_.size()) ustar[a] += (dt / keptDt_) * keptIncrement_[id];
   }
@@ -202,7 +199,7 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
       if (settled) break;
     }
     activeSet_.remember(c.origId);
-    keepIncrement(ps, dt, force, ustar);  // (parallel: ustar of the own rows; ghosts follow in ProjectionSolver)
+    keepIncrement(ps, dt, g, ustar);  // (parallel: ustar of the own rows; ghosts follow in ProjectionSolver)
     ++frictionSolves_;
     frictionSettled_ += lastSettled_;
     frictionPassesDone_ += lastPasses_;
@@ -217,12 +214,11 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
     perf.push_back(solvers_[static_cast<std::size_t>(d)]->solveFinal(system_, x));
     for (std::size_t a = 0; a < n; ++a) ustar[a][d] = x[a];
   }
-  keepIncrement(ps, dt, force, ustar);
+  keepIncrement(ps, dt, g, ustar);
   return perf;
 }
 
-template <class Force>
-void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, const Force& force,
+void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, const Vec3& g,
                                         const std::vector<Vec3>& ustar) {
   if (!warmFromLastIncrement_) return;
   const auto& c = ps.cloud;
@@ -230,7 +226,7 @@ void ImplicitViscousStep::keepIncrement(const ParticleSystem& ps, double dt, con
   for (std::size_t a = 0; a < ps.ownMaterial(); ++a) size = std::max(size, static_cast<std::size_t>(c.origId[a]) + 1);
   keptIncrement_.assign(std::max(size, keptIncrement_.size()), Vec3::Zero());
   for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {
-    keptIncrement_[static_cast<std::size_t>(c.origId[a])] = ustar[a] - c.U[a] - dt * force(a);
+    keptIncrement_[static_cast<std::size_t>(c.origId[a])] = ustar[a] - c.U[a] - dt * g;
   }
   keptDt_ = dt;
 }

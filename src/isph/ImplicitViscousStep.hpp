@@ -24,8 +24,6 @@
 // interleaved; `U { ... }`) and the wall-normal motion is left to the pressure exactly. The time step is then free of the viscous limit ρh²/η: a zone below yield, where
 // η reaches etaMax, moves as a rigid body instead of jittering (numerics.md §4).
 // The cross term ∇·(η ∇uᵀ), non-zero where η varies, is neglected (as in Morris's form).
-// With a lagged body force f (the incremental projection), g becomes g + f throughout: in
-// the right-hand side, the walls' increment and the explicit predictor.
 #include <array>
 #include <memory>
 #include <vector>
@@ -47,12 +45,9 @@ class ImplicitViscousStep {
   ~ImplicitViscousStep();
 
   // u* for the material particles (walls and dummies: 0); one performance per component.
-  // lagged: a further body force per unit mass for each material particle (−∇pⁿ/ρ of the
-  // incremental projection, stages/IncrementalProjection.hpp), or empty.
   std::vector<SolverPerformance> solve(const ParticleSystem& ps, const MaterialTable& materials,
                                        const std::vector<double>& eta, const WallFriction* friction, const Vec3& g,
-                                       double dt, double h, const std::vector<Vec3>& lagged,
-                                       std::vector<Vec3>& ustar);
+                                       double dt, double h, std::vector<Vec3>& ustar);
 
   double assemblySeconds() const { return assemblySeconds_; }
   // The material particles were reordered: no solver keeps a preconditioner across it.
@@ -76,10 +71,9 @@ class ImplicitViscousStep {
  private:
   // The components together, with the bed drag K_a (I − n nᵀ) in each particle's block.
   void assembleCoupled(int dim, const std::vector<Vec3>& rhs);
-  // The viscous increment u* − uⁿ − dt f of each material particle, by origId: the next
+  // The viscous increment u* − uⁿ − dt g of each material particle, by origId: the next
   // step's warm start.
-  template <class Force>
-  void keepIncrement(const ParticleSystem& ps, double dt, const Force& force, const std::vector<Vec3>& ustar);
+  void keepIncrement(const ParticleSystem& ps, double dt, const Vec3& g, const std::vector<Vec3>& ustar);
 
   std::vector<std::unique_ptr<LinearSolver>> solvers_;
   std::unique_ptr<LinearSolver> coupledSolver_;

@@ -79,8 +79,10 @@ void readShifting(const Dictionary& d, IsphSchemes& s) {
     s.shifting.maxShift = sh.getOrDefault("maxShift", s.shifting.maxShift);
     requireRange(sh, "maxShift", s.shifting.maxShift, 0.0, 1.0);
     s.shifting.pairsNearSurface = sh.getChoiceOrDefault("nearSurface", {"none", "pairs"}, "none") == "pairs";
+    s.shifting.deformationSpeed =
+        sh.getChoiceOrDefault("speed", {"velocity", "deformation"}, "velocity") == "deformation";
   }
-  sh.checkKeywords({"coefficient", "maxShift", "nearSurface"});
+  sh.checkKeywords({"coefficient", "maxShift", "nearSurface", "speed"});
 }
 
 // The time-step factors and the two safeguards.
@@ -138,6 +140,14 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   readWeaklyCompressible(d, s);
   d.markRead("kernel");  // (the kernel's: makeKernel, src/sph)
   d.markRead("hOverDx");
+  for (const char* key : {"incrementalPressure", "laggedPressure", "pressureGradient"}) {
+    if (const Entry* e = d.findEntry(key)) {
+      fatalIOError(e->location(),
+                   fmt::format("keyword '{}' in {} was removed (issue 48): every scene runs the plain projection, "
+                               "Eq. 11 in its renormalised difference form (doc/numerics.md §4); remove the line",
+                               key, d.name()));
+    }
+  }
   s.kernelCorrection = d.getOrDefault("kernelCorrection", s.kernelCorrection);
   if (s.method == Method::isph) readPressurePoisson(d, s);
   readFreeSurface(d, dimension, s);
@@ -147,7 +157,7 @@ IsphSchemes IsphSchemes::read(const Dictionary& d, int dimension) {
   readWallFriction(d, s);
   if (s.method == Method::wcsph) {
     readWeaklyCompressibleViscousTerm(d);  // no PPE, no implicit solve: the projection's entries are not read
-    for (const char* key : {"laplacian", "source", "incrementalPressure", "laggedPressure", "pressureGradient"}) {
+    for (const char* key : {"laplacian", "source"}) {
       if (const Entry* e = d.findEntry(key)) {
         warning(fmt::format("keyword '{}' in {} is the projection's (method isph): not used by method wcsph", key,
                             d.name()),
@@ -196,9 +206,11 @@ std::string IsphSchemes::describe() const {
                                                   : projection  ? "on, p >= 0 after the PPE solve"
                                                                 : "on, p >= 0 from the equation of state");
   if (shifting.enabled) {
-    out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, |dr| <= {} dx; none at the free surface, "
-                       "{} next to it\n",
-                       shifting.coefficient, shifting.maxShift, shifting.pairsNearSurface ? "the pair term alone" : "none");
+    out += fmt::format("    particle shifting: Lind et al. (2012), A = {}, D from {}, |dr| <= {} dx; none at the free "
+                       "surface, {} next to it\n",
+                       shifting.coefficient,
+                       shifting.deformationSpeed ? "the speed of deformation h |gamma dot|" : "the speed |u|",
+                       shifting.maxShift, shifting.pairsNearSurface ? "the pair term alone" : "none");
   } else {
     out += "    particle shifting: off\n";
   }

@@ -11,9 +11,8 @@
 //                    δ of δ-SPH (0: off); artificialViscosity: Monaghan's α (0: off; with 0.01 the
 //                    tank at rest of hydrostaticTank was 2-3 times noisier). With wcsph the
 //                    deviatoric term is explicit and controlDict's maxCo is the acoustic Courant
-//                    number, dt ≤ maxCo h/(c0 + |u|max); the projection's keywords (laplacian, source,
-//                    incrementalPressure, laggedPressure, pressureGradient) are not read: a warning names
-//                    each one given.
+//                    number, dt ≤ maxCo h/(c0 + |u|max); the projection's keywords (laplacian, source)
+//                    are not read: a warning names each one given.
 //   kernel           WendlandC2;     // | cubicSpline: read by src/sph (makeKernel), as particleMesh
 //   hOverDx          1.3;            // and sampleForces read them
 //   kernelCorrection on;             // renormalised gradients (strain rate, divergence, shifting)
@@ -26,21 +25,17 @@
 //                      compressed granular; }  // | none | all: flagged particles that are
 //                    compressed stay unknowns of the PPE (for granular materials by default)
 //   tensionCutoff    on;             // p ← max(p, 0) after the solve (no tension)
-//   shifting         { enabled on; coefficient 2; maxShift 0.2; nearSurface none; }
+//   shifting         { enabled on; coefficient 2; maxShift 0.2; nearSurface none; speed velocity; }
 //                    // Lind et al. (2012); nearSurface pairs: next to the free surface the
-//                    // pair term alone (ParticleShifting.hpp), none: no shift there
+//                    // pair term alone (ParticleShifting.hpp), none: no shift there; speed
+//                    // deformation: D = A h (h |γ̇|) dt, so that a body moving as a whole is
+//                    // not shifted (every granular scene), velocity: Lind's A h |u| dt (water)
 //   timeStep         { forceFactor 0.25; viscousFactor 0.125; maxGrowth 1.1; }
 //   wallSafeguard    { distance 0.5; }   // in dx: penetration safeguard
 //   collision        { distance 0.5; }   // in dx: material pairs closer than this are
 //                                    // separated as inelastic contacts (0: off)
 //   viscousTerm      implicit;       // | explicit: the deviatoric term of Eq. 6, a stage read by
 //                                    // stages/DeviatoricTerm.hpp (and refused as implicit by wcsph)
-//   incrementalPressure none;        // | granular | all: the projection, a stage read by
-//                                    // stages/Projection.hpp (plain or incremental)
-//   laggedPressure   { form pairs; smoothing 0; }  // | gradient: the incremental projection's
-//                                    // (stages/IncrementalProjection.hpp)
-//   pressureGradient renormalised;   // | symmetric: the form of Eq. 11 in the plain projection
-//                                    // (stages/PlainProjection.hpp)
 //   wallFriction     { slipSpeed 1e-5; passes 10; normalForce wallPressure; }
 //                                    // slipSpeed [m/s]: Coulomb walls stick
 //                                    // below it (default 1e-4 sqrt(|g| dx)); passes: at most
@@ -49,13 +44,11 @@
 //                                    // average; see WallFrictionActiveSet.hpp); normalForce: the
 //                                    // capacity is tan δ times the walls' pressure (wallPressure),
 //                                    // or times the material's pressure carried to the wall
-//                                    // hydrostatically (hydrostatic; WallFriction.hpp). With
-//                                    // incrementalPressure and laggedPressure pairs it is the
-//                                    // wall pairs' normal reaction whatever this says
+//                                    // hydrostatically (hydrostatic; WallFriction.hpp)
 //
-// The stages refuse, at the entry's line, the settings of another stage that they would
-// ignore (the incremental projection with viscousTerm explicit, laggedPressure without it,
-// pressureGradient symmetric or wallFriction's normalForce hydrostatic where it acts).
+// Removed, a fatal error at their line (issue 48: every scene runs the plain projection with
+// the renormalised Eq. 11; doc/notes/granularStep.md): incrementalPressure, laggedPressure,
+// pressureGradient.
 #include <string>
 
 #include "core/dictionary/Dictionary.hpp"
@@ -89,6 +82,7 @@ struct ShiftingSettings {
   double coefficient = 2.0;  // A in D = A h |u| dt
   double maxShift = 0.2;     // in dx
   bool pairsNearSurface = false;  // shifting { nearSurface pairs; }
+  bool deformationSpeed = false;  // shifting { speed deformation; }: D from h |γ̇|, else from |u| (Lind)
 };
 
 struct IsphSchemes {
@@ -120,9 +114,8 @@ struct IsphSchemes {
   int frictionPasses = 10;
   FrictionNormal frictionNormal = FrictionNormal::wallPressure;
 
-  // The shared settings; the stages' entries (viscousTerm, incrementalPressure, laggedPressure,
-  // pressureGradient) are read by the stages, and the solver checks for unknown keywords once
-  // they have been (Dictionary::checkKeywords).
+  // The shared settings; the stages' entries (viscousTerm) are read by the stages, and the
+  // solver checks for unknown keywords once they have been (Dictionary::checkKeywords).
   static IsphSchemes read(const Dictionary& dict, int dimension);
   // One line per setting for the start of the log.
   std::string describe() const;

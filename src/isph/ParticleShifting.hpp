@@ -1,7 +1,19 @@
 #pragma once
 // Fickian particle shifting (Lind et al. 2012): keeps the particle distribution even, which
 // the projection alone does not. δr_a = −D ∇C_a, ∇C_a = Σ_b V_b (1 + 0.2 (W_ab/W(dx))⁴) ∇_a W_ab,
-// D = A h |u_a| dt (so a resting deposit is never shifted); |δr| ≤ maxShift·dx. Free-surface
+// D = A h u dt, with u (isphSchemes `shifting { speed }`):
+//   velocity     |u_a|, as Lind et al. (the default; water): a deposit at rest is never shifted,
+//                but a block that slides as a whole is, and it reshuffled slidingBlock's stiff
+//                block as it slid (its acceleration +28 % at maxCo 0.2, +13 % at 0.05);
+//   deformation  h |γ̇_a|, the speed at which the material deforms across a smoothing length
+//                (|γ̇| = √(2 D:D) of the material-only renormalised velocity gradient,
+//                deformationSpeed): nothing moving as a whole is shifted (every granular scene:
+//                the block −0.3 % / +0.05 % / +0.6 % at dt, dt/2, dt/4). The dam break's surge
+//                front ran 13 % fast with it, so water keeps |u|. The RMS of |u_b − u_a| over the
+//                support, tried first, rises with a particle's own noise, which the Taylor
+//                correction's δr·∇u then fed: the 2.5 mm column at maxCo 0.05 blew up at 0.56 s
+//                (doc/notes/granularStep.md).
+// |δr| ≤ maxShift·dx. Free-surface
 // particles are not shifted, and in effect neither are their neighbours: next to the surface
 // the component along −∇C/|∇C| is removed, and δr is parallel to ∇C, so nothing is left (up
 // to rounding). A flow a few particles thick lies wholly in that band, and there the
@@ -29,6 +41,10 @@
 #include "isph/ParticleSystem.hpp"
 
 namespace isph {
+
+// h |γ̇_a| of material particle a, the strain rate of its material-only renormalised velocity
+// gradient (MaterialGradient's moment): how fast the material deforms there, whatever the frame.
+double deformationSpeed(const ParticleSystem& ps, const Kernel& kernel, std::size_t a, double correctionMinDeterminant);
 
 struct ShiftingResult {
   double maxShift = 0;  // largest |δr| / dx

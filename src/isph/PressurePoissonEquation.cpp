@@ -24,8 +24,7 @@ PressurePoissonEquation::PressurePoissonEquation(const PpeSettings& settings, bo
 
 void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& kernel,
                                        const KernelGradientCorrection& L, const std::vector<Vec3>& ustar,
-                                       const std::vector<char>& freeSurfaceIn, const Vec3& g, double dt,
-                                       const std::vector<double>* base) {
+                                       const std::vector<char>& freeSurfaceIn, const Vec3& g, double dt) {
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const std::size_t nMat = ps.nMaterial;
@@ -141,8 +140,6 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
             system_.columns[pos] = ps.globalRow(b);
             system_.values[pos] = C;
             ++pos;
-          } else if (base) {
-            rhsWall -= C * (*base)[b];  // the Dirichlet value δp_b = −pⁿ_b
           }
           nearBoundary = nearBoundary || freeSurfaceIn[b];
           if (needThetaStar)
@@ -151,8 +148,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
             divergence += ps.volume[b] * (ustar[b] - ustar[a]).dot(L[a] * (nl.F[kk] * xab));
         } else {
           // Wall or dummy: p_b = p_a + δ_ab (WallBoundaryPressure); C_ab (p_a − p_b) = −C_ab δ_ab.
-          rhsWall += C * (base ? wallPressureIncrementOfIncrement(ps, ustar, a, b, dt)
-                               : wallPressureIncrement(ps, ustar, g, a, b, dt));
+          rhsWall += C * wallPressureIncrement(ps, ustar, g, a, b, dt);
           nearBoundary = true;
           thetaLattice += ps.volume[b] * kernel.W((xab + halfDx * wallNormal(ps, b)).norm());
           thetaStar += ps.volume[b] * nl.W[kk];  // the wall moves with a: no relative motion
@@ -186,7 +182,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     }
   }  // omp parallel
   // The Dirichlet rows, scaled like the unknowns' (their mean diagonal) so that neither
-  // dominates the residual: s p_a = s p_D, with p_D = 0, or −pⁿ_a for the increment.
+  // dominates the residual: s p_a = s p_D.
   double diagonalSum = 0;
   long unknowns = 0;
   for (std::size_t a = 0; a < static_cast<std::size_t>(nRows); ++a) {
@@ -201,7 +197,7 @@ void PressurePoissonEquation::assemble(const ParticleSystem& ps, const Kernel& k
     const auto at = static_cast<std::size_t>(system_.rowStart[a]);
     system_.columns[at] = ps.globalRow(a);
     system_.values[at] = scale;
-    system_.rhs[a] = base ? -scale * (*base)[a] : 0.0;
+    system_.rhs[a] = 0.0;
   }
 }
 
@@ -226,34 +222,6 @@ SolverPerformance PressurePoissonEquation::solve(ParticleSystem& ps, const Kerne
     if (tensionCutoff_) p[a] = std::max(p[a], 0.0);
   }
   exchangeGhosts(ps, p);  // parallel: the walls' pressures (WallBoundary::update) read it at ghosts
-  return perf;
-}
-
-SolverPerformance PressurePoissonEquation::solveIncrement(ParticleSystem& ps, const Kernel& kernel,
-                                                          const KernelGradientCorrection& L,
-                                                          const std::vector<Vec3>& ustar,
-                                                          const std::vector<char>& freeSurface, const Vec3& g,
-                                                          double dt, std::vector<double>& increment) {
-  const auto start = std::chrono::steady_clock::now();
-  auto& p = ps.cloud.p;
-  const std::vector<double> base(p.begin(), p.begin() + static_cast<long>(ps.nMaterial));
-  assemble(ps, kernel, L, ustar, freeSurface, g, dt, &base);
-  assemblySeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const std::size_t nRows = ps.ownMaterial();  // (parallel: the own rows)
-  std::vector<double> x(nRows, 0.0);  // warm start: no change (the Dirichlet rows: their value)
-  for (std::size_t a = 0; a < nRows; ++a) {
-    if (dirichlet_[a]) x[a] = -base[a];
-  }
-  SolverPerformance perf = solver_->solve(system_, x);
-  increment.assign(ps.nMaterial, 0.0);
-  for (std::size_t a = 0; a < nRows; ++a) {
-    p[a] = dirichlet_[a] ? 0.0 : base[a] + x[a];
-    if (tensionCutoff_) p[a] = std::max(p[a], 0.0);
-    increment[a] = p[a] - base[a];
-  }
-  exchangeGhosts(ps, p);  // parallel: Eq. 11 reads both at ghosts
-  exchangeGhosts(ps, increment);
   return perf;
 }
 

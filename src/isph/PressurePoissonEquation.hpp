@@ -56,15 +56,6 @@ class PressurePoissonEquation {
   SolverPerformance solve(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
                           const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);
 
-  // The incremental projection (stages/IncrementalProjection.hpp): solves for δp = p^{n+1} − pⁿ with u* from a
-  // predictor that held the force of pⁿ, δp = −pⁿ on the free surface (p^{n+1} = 0 there) and
-  // the walls' condition on the increment (wallPressureIncrementOfIncrement). Sets the
-  // material's ps.cloud.p to pⁿ + δp (tension cut-off as configured) and `increment` to
-  // p^{n+1} − pⁿ after the cut-off, which Eq. 11 then applies; the walls' p is left as it is.
-  SolverPerformance solveIncrement(ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
-                                   const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface,
-                                   const Vec3& g, double dt, std::vector<double>& increment);
-
   // The last assembled system (for tests and diagnostics).
   const SparseSystem& system() const { return system_; }
   double assemblySeconds() const { return assemblySeconds_; }
@@ -73,10 +64,8 @@ class PressurePoissonEquation {
   void renumbered() { solver_->rebuildPreconditionerForNextSolve(); }
 
  private:
-  // `base`: pⁿ for the increment form (Dirichlet value −pⁿ, walls on the increment), or null.
   void assemble(const ParticleSystem& ps, const Kernel& kernel, const KernelGradientCorrection& L,
-                const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt,
-                const std::vector<double>* base = nullptr);
+                const std::vector<Vec3>& ustar, const std::vector<char>& freeSurface, const Vec3& g, double dt);
 
   PpeSettings settings_;
   bool tensionCutoff_;

@@ -44,45 +44,24 @@ inline bool facesMaterial(const ParticleSystem& ps, std::size_t b, std::size_t a
   return (ps.cloud.positions[a] - ps.cloud.positions[b]).dot(wallNormal(ps, b)) > 0;
 }
 
-// Where a particle sits as the symmetric sums see it: a boundary particle half a spacing
-// behind its wall line, on the material's lattice continued (the wall particles sit on the
-// line, half a spacing closer; there the symmetric form held a layer at rest up by about
-// twice its weight); a material particle where it is.
+// Where a particle sits as the symmetric sums of the weakly-compressible step see it: a boundary
+// particle half a spacing behind its wall line, on the material's lattice continued (the wall
+// particles sit on the line, half a spacing closer; there the paper's symmetric form of Eq. 11
+// held a layer at rest up by about twice its weight); a material particle where it is.
 inline Vec3 latticePosition(const ParticleSystem& ps, std::size_t b) {
   return ps.isMaterial(b) ? ps.cloud.positions[b] : Vec3(ps.cloud.positions[b] - 0.5 * ps.dx * wallNormal(ps, b));
 }
 
-// The two parts of p_b(a) − p_a for material particle a and boundary particle b seen at
-// x_a + rba: along the normal (the pull limited) and along the wall. (Kept apart so that each
-// caller adds them in its own order: p_a + (normal + tangential) or p_a + normal + tangential.)
-struct WallPressureParts {
-  double normal = 0, tangential = 0;
-};
-inline WallPressureParts wallPressureParts(const ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g,
-                                           std::size_t a, std::size_t b, const Vec3& rba, double dt) {
+// p_b(a) − p_a for material particle a and boundary particle b: along the normal (the pull
+// limited) and along the wall.
+inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g,
+                                    std::size_t a, std::size_t b, double dt) {
   const Vec3& n = wallNormal(ps, b);
+  const Vec3 rba = ps.cloud.positions[b] - ps.cloud.positions[a];
   const double rn = rba.dot(n);
   const double normal = ps.rho[a] * ustar[a].dot(n) / dt * rn;  // rn < 0: pushes when moving in
   const Vec3 G = ps.frictionWall[b] ? ps.wallTangentialGradient[a] : Vec3(ps.rho[a] * g);
-  return {std::max(normal, -ps.wallPullLimit[a]), G.dot(rba - rn * n)};
-}
-
-// p_b(a) − p_a for material particle a and boundary particle b.
-inline double wallPressureIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar, const Vec3& g,
-                                    std::size_t a, std::size_t b, double dt) {
-  const WallPressureParts parts =
-      wallPressureParts(ps, ustar, g, a, b, ps.cloud.positions[b] - ps.cloud.positions[a], dt);
-  return parts.normal + parts.tangential;
-}
-
-// The same for the pressure increment δp = p^{n+1} − pⁿ of the incremental projection, whose
-// predictor u* already holds the force of pⁿ: the normal condition ∂δp/∂n = ρ u*·n/dt (with
-// the same limit on the pull) and no tangential part (pⁿ carries it).
-inline double wallPressureIncrementOfIncrement(const ParticleSystem& ps, const std::vector<Vec3>& ustar,
-                                               std::size_t a, std::size_t b, double dt) {
-  const Vec3& n = wallNormal(ps, b);
-  const double rn = (ps.cloud.positions[b] - ps.cloud.positions[a]).dot(n);
-  return std::max(ps.rho[a] * ustar[a].dot(n) / dt * rn, -ps.wallPullLimit[a]);
+  return std::max(normal, -ps.wallPullLimit[a]) + G.dot(rba - rn * n);
 }
 
 // After the solve: each wall and dummy particle takes the Shepard (kernel-weighted) mean of

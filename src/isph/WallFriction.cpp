@@ -25,7 +25,7 @@ WallFriction::WallFriction(const ParticleSystem& ps, const MaterialTable& materi
   active_ = anyFriction && anySlides;
 }
 
-void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* reaction) {
+void WallFriction::update(const ParticleSystem& ps) {
   const auto& c = ps.cloud;
   const auto& nl = ps.neighbours;
   const std::size_t n = ps.size();
@@ -36,8 +36,7 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
 
   // T_w / Σ_c W_cw for every wall particle of a friction patch.
   std::vector<double> share(n, 0.0);
-  // (With the normal reaction given, the wall pressures are not needed.)
-  const long wallEnd = reaction ? static_cast<long>(ps.wallBegin()) : static_cast<long>(ps.dummyBegin());
+  const long wallEnd = static_cast<long>(ps.dummyBegin());
   const bool hydrostatic = normalStress_ == FrictionNormal::hydrostatic;
 #pragma omp parallel for schedule(static)
   for (long iw = static_cast<long>(ps.wallBegin()); iw < wallEnd; ++iw) {
@@ -70,7 +69,7 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
   for (long ia = 0; ia < nMat; ++ia) {
     const auto a = static_cast<std::size_t>(ia);
     if (!slides_[static_cast<std::size_t>(c.material[a])]) continue;
-    double F = 0, tanSum = 0, weight = 0;
+    double F = 0;
     Vec3 normal = Vec3::Zero();
     for (long k = nl.start[a]; k < nl.start[a + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
@@ -78,11 +77,8 @@ void WallFriction::update(const ParticleSystem& ps, const std::vector<Vec3>* rea
       if (!ps.isWall(w) || tanDelta_[static_cast<std::size_t>(c.patch[w])] <= 0 || !facesMaterial(ps, w, a)) continue;
       F += share[w] * nl.W[kk];
       normal += nl.W[kk] * c.normal[w];
-      tanSum += nl.W[kk] * tanDelta_[static_cast<std::size_t>(c.patch[w])];
-      weight += nl.W[kk];
     }
     const double len = normal.norm();
-    if (reaction && len > 0) F = tanSum / weight * std::max((*reaction)[a].dot(normal / len), 0.0);
     if (F > 0 && len > 0) {
       capacity_[a] = F;
       normal_[a] = normal / len;

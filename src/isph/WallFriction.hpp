@@ -57,12 +57,8 @@ class WallFriction {
   bool slidingMaterial() const { return anySlides_; }
   double slipSpeed() const { return slipSpeed_; }
 
-  // Capacities and normals from the current positions and wall pressures; with `reaction`
-  // (the normal force of the friction walls on each material particle, from the lagged
-  // pressure of the incremental projection) F_a = tan δ_a max(R_a·n_a, 0) instead, with tan δ_a
-  // the W-weighted mean over a's friction-wall neighbours: exactly tan δ × the normal
-  // reaction, however the pressure is distributed.
-  void update(const ParticleSystem& ps, const std::vector<Vec3>* reaction = nullptr);
+  // Capacities and normals from the current positions and wall pressures.
+  void update(const ParticleSystem& ps);
 
   double capacity(std::size_t a) const { return capacity_[a]; }
   const Vec3& normal(std::size_t a) const { return normal_[a]; }

@@ -10,7 +10,7 @@ namespace isph {
 namespace {
 
 // x_a − x_b and the gradient factor of a pair, boundary particles at their lattice positions
-// (WallBoundaryPressure.hpp) as in laggedPressureForce.
+// (WallBoundaryPressure.hpp): the symmetric sums are consistent only on a complete lattice.
 struct PairGeometry {
   Vec3 x = Vec3::Zero();
   double F = 0;

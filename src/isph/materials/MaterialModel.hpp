@@ -40,7 +40,7 @@ class MaterialModel {
   virtual double maxViscosity() const = 0;
   virtual WallContact wallContact() const { return WallContact::noSlip; }
   // A granular material (a soil model): the schemes that isphSchemes applies to granular
-  // materials (freeSurface's `compressed granular`, `incrementalPressure granular`) act on it.
+  // materials (freeSurface's `compressed granular`) act on it.
   virtual bool granular() const { return false; }
   // True for a model that integrates its stress in time (elasticPlastic, ElasticPlasticStress)
   // instead of deriving it from a viscosity: viscosity() is then unused.

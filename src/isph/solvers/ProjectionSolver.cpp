@@ -31,7 +31,7 @@ ProjectionSolver::ProjectionSolver(const Time& time, bool parallel)
                                                    std::move(keepCompressed));
   const StageSetup setup{schemesDict_, solution, schemes_, *materials_, ps_.cloud.properties.dimension};
   deviatoric_ = DeviatoricTerm::New(setup);
-  projection_ = Projection::New(setup, *deviatoric_);
+  projection_ = Projection::New(setup);
   solution.checkKeywords({"U"});
   finishConstruction();
 }
@@ -53,11 +53,9 @@ void ProjectionSolver::intermediateVelocity(const Time& time, StepReport& report
   {
     auto t = timer_.scope("rheology");
     viscousStress_->update();
-    std::vector<Vec3> reaction;  // the friction walls' normal reaction, where the lagged force gives it
-    projection_->beforePredictor(context_, dt, freshStart_ && stepsTaken_ <= 1, reaction);
-    friction_->update(ps_, reaction.empty() ? nullptr : &reaction);
+    friction_->update(ps_);
   }
-  maxViscousAcceleration_ = deviatoric_->predict(context_, dt, stepsTaken_, projection_->lagged(), ustar_, report);
+  maxViscousAcceleration_ = deviatoric_->predict(context_, dt, stepsTaken_, ustar_, report);
 }
 
 void ProjectionSolver::solvePressure(double dt, StepReport& report) {
@@ -111,7 +109,7 @@ StepReport ProjectionSolver::step(const Time& time) {
   intermediateVelocity(time, report);  // Eq. 6
   if (!report.viscous.empty() && report.failedSolve() != &report.ppe) {
     deviatoric_->renumbered();  // nothing has moved yet; a retry builds a fresh hierarchy for U
-    ps_.cloud.p = pStart_;      // (the lagged pressure's smoothing may have changed it)
+    ps_.cloud.p = pStart_;
     return report;
   }
   solvePressure(dt, report);  // Eq. 10

@@ -5,8 +5,8 @@
 //   intermediateVelocity, u* (Eq. 6; the deviatoric term a stage: stages/DeviatoricTerm.hpp)
 //   → the PPE (Eqs. 8/10) → Eq. 11 and the walls' pressures (the projection a stage:
 //   stages/Projection.hpp) → x^{n+1} → finishStep (shifting, safeguards)
-// The stages are chosen by name from system/isphSchemes (viscousTerm; incrementalPressure and
-// the scene), each reading its own entries; the solver owns the particles and the models they
+// The stages are chosen by name from system/isphSchemes (viscousTerm; the projection is the
+// plain one), each reading its own entries; the solver owns the particles and the models they
 // share.
 #include <memory>
 #include <vector>

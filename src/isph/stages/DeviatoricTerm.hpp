@@ -29,13 +29,12 @@ class DeviatoricTerm {
   virtual bool isImplicit() const = 0;
   // One line for the log's list of schemes.
   virtual std::string describe() const = 0;
-  // u* of the material (Eq. 6) with the viscosities of c.viscousStress, gravity, `lagged` (a
-  // further body force per unit mass for each material particle, or empty) and the wall
+  // u* of the material (Eq. 6) with the viscosities of c.viscousStress, gravity and the wall
   // friction (c.wallFriction receives the walls' share); the deviatoric stress that acted is
   // kept in c.viscousStress. A failed linear solve is in report.viscous. Returns the largest
   // acceleration of an explicit deviatoric term (0 when implicit).
-  virtual double predict(StepContext& c, double dt, long stepsTaken, const std::vector<Vec3>& lagged,
-                         std::vector<Vec3>& ustar, StepReport& report) = 0;
+  virtual double predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar,
+                         StepReport& report) = 0;
   // The material particles were renumbered (reordering, a write, a failed solve).
   virtual void renumbered() {}
   // What the term carries to the next step, into and out of a restart's StepState.

@@ -20,8 +20,8 @@ std::string ExplicitDeviatoricTerm::describe() const {
                      : "    deviatoric term: none in this scene (u* from gravity alone)\n";
 }
 
-double ExplicitDeviatoricTerm::predict(StepContext& c, double dt, long stepsTaken, const std::vector<Vec3>&,
-                                       std::vector<Vec3>& ustar, StepReport&) {
+double ExplicitDeviatoricTerm::predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar,
+                                       StepReport&) {
   auto t = c.timer.scope("intermediate velocity");
   c.viscousStress.keepActing(nullptr, stepsTaken);
   const double maxAcceleration =

@@ -12,8 +12,7 @@ class ExplicitDeviatoricTerm final : public DeviatoricTerm {
   explicit ExplicitDeviatoricTerm(const StageSetup& setup);
   bool isImplicit() const override { return false; }
   std::string describe() const override;
-  double predict(StepContext& c, double dt, long stepsTaken, const std::vector<Vec3>& lagged, std::vector<Vec3>& ustar,
-                 StepReport& report) override;
+  double predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar, StepReport& report) override;
 
  private:
   bool deviatoric_;  // some material has a deviatoric stress

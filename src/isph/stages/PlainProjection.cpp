@@ -12,14 +12,10 @@ const bool registered =
 
 }  // namespace
 
-PlainProjection::PlainProjection(const StageSetup& setup)
-    : symmetric_(setup.schemes.getChoiceOrDefault("pressureGradient", {"renormalised", "symmetric"}, "renormalised") ==
-                 "symmetric") {}
+PlainProjection::PlainProjection(const StageSetup&) {}
 
 std::string PlainProjection::describe() const {
-  return symmetric_ ? "    projection: plain (Eq. 11 corrects with the whole pressure), its gradient symmetric, sum "
-                      "m_b (p_a/rho_a^2 + p_b/rho_b^2) grad W (as the paper)\n"
-                    : "    projection: plain (Eq. 11 corrects with the whole pressure), its gradient renormalised\n";
+  return "    projection: plain (Eq. 11 corrects with the whole pressure), its gradient renormalised\n";
 }
 
 SolverPerformance PlainProjection::solvePressure(StepContext& c, PressurePoissonEquation& ppe,
@@ -29,7 +25,7 @@ SolverPerformance PlainProjection::solvePressure(StepContext& c, PressurePoisson
 
 void PlainProjection::correct(StepContext& c, const std::vector<Vec3>& ustar, double dt) {
   c.walls.update(ustar, dt);  // the walls' pressures of the step (p^{n+1})
-  correctVelocity(c.ps, c.correction, ustar, c.g, dt, symmetric_ ? &c.kernel : nullptr);
+  correctVelocity(c.ps, c.correction, ustar, c.g, dt);
   exchangeGhosts(c.ps, c.ps.cloud.U);  // parallel
 }
 

@@ -25,10 +25,10 @@ std::string SemiImplicitDeviatoricTerm::describe() const {
                      passes_);
 }
 
-double SemiImplicitDeviatoricTerm::predict(StepContext& c, double dt, long stepsTaken, const std::vector<Vec3>& lagged,
-                                           std::vector<Vec3>& ustar, StepReport& report) {
+double SemiImplicitDeviatoricTerm::predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar,
+                                           StepReport& report) {
   const auto perf = viscous_->solve(c.ps, c.materials, c.viscousStress.eta(), &c.friction, c.g, dt, c.kernel.h(),
-                                    lagged, ustar);
+                                    ustar);
   exchangeGhosts(c.ps, ustar);  // parallel: solved for the own particles
   report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
   c.timer.add("viscous assembly", viscous_->assemblySeconds());

@@ -1,6 +1,6 @@
 #pragma once
 // `viscousTerm implicit;` (the default): the deviatoric term of Eq. 6 solved semi-implicitly
-// with the viscosities of the step start, (I − dt/ρ ∇·2ηⁿD) u* = uⁿ + dt (g + lagged), one PCG
+// with the viscosities of the step start, (I − dt/ρ ∇·2ηⁿD) u* = uⁿ + dt g, one PCG
 // solve per component, or one for all components where a Coulomb wall drag acts, repeated up
 // to wallFriction's `passes` times until the stick/slip state of each particle on a wall
 // settles (ImplicitViscousStep; linear solver: isphSolution's `U`). No viscous time-step limit:
@@ -17,8 +17,7 @@ class SemiImplicitDeviatoricTerm final : public DeviatoricTerm {
   explicit SemiImplicitDeviatoricTerm(const StageSetup& setup);
   bool isImplicit() const override { return true; }
   std::string describe() const override;
-  double predict(StepContext& c, double dt, long stepsTaken, const std::vector<Vec3>& lagged, std::vector<Vec3>& ustar,
-                 StepReport& report) override;
+  double predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar, StepReport& report) override;
   void renumbered() override { viscous_->renumbered(); }
   void saveState(StepState& s) const override { viscous_->saveState(s); }
   void restoreState(const StepState& s) override { viscous_->restoreState(s); }

@@ -1,7 +1,7 @@
 // The material table's traits of a scene: "granular" is a trait of the soil models
 // (rigidPlastic, elasticPlastic), not of the fluids (newtonian, inviscid), whatever their wall
-// contact; the schemes for granular materials (`compressed granular`, `incrementalPressure
-// granular`) act on a scene with at least one.
+// contact; the schemes for granular materials (`compressed granular`) act on a scene with at
+// least one.
 #include "isph/materials/MaterialTable.hpp"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,8 @@
-// The projection chosen by name from `incrementalPressure` and the scene (stages/Projection.hpp):
-// plain by default and where the incremental projection does not act (`granular` in a scene
-// without a granular material, or with the explicit deviatoric term), incremental where it
-// does; each reads its own entries (pressureGradient, laggedPressure) and says what it is in
-// its log lines. Settings that would be ignored are an error at the line of the entry,
-// saying what it needs; the settings that go together are accepted.
+// The projection (stages/Projection.hpp): the plain projection in every scene, Eq. 11 in its
+// renormalised difference form; the keywords of the variants removed with issue 48
+// (incrementalPressure, laggedPressure, pressureGradient) are an error at their line, naming
+// the keyword and saying that it was removed, so that an old case does not run something
+// other than what it says.
 #include "isph/stages/Projection.hpp"
 
 #include <gtest/gtest.h>
@@ -18,73 +17,40 @@ using test::StageSetupForTest;
 
 std::unique_ptr<Projection> projectionFor(const std::string& text, const std::string& material) {
   const StageSetupForTest s(text, material);
-  const auto deviatoric = DeviatoricTerm::New(s.setup());
-  return Projection::New(s.setup(), *deviatoric);
+  return Projection::New(s.setup());
 }
 
 bool says(const Projection& p, const std::string& what) { return p.describe().find(what) != std::string::npos; }
 
-TEST(Projection, PlainWithTheRenormalisedGradientByDefault) {
-  const auto p = projectionFor("", "sand");
-  EXPECT_TRUE(says(*p, "projection: plain")) << p->describe();
-  EXPECT_TRUE(says(*p, "renormalised")) << p->describe();
-  EXPECT_TRUE(p->lagged().empty());
-  EXPECT_TRUE(says(*projectionFor("pressureGradient symmetric;\n", "sand"), "as the paper"));
-}
-
-TEST(Projection, IncrementalWhereItActsWithThePairFormByDefault) {
-  const auto sand = projectionFor("incrementalPressure granular;\n", "sand");
-  EXPECT_TRUE(says(*sand, "projection: incremental")) << sand->describe();
-  EXPECT_TRUE(says(*sand, "symmetric pair form")) << sand->describe();
-  EXPECT_TRUE(says(*projectionFor("incrementalPressure granular;\n", "water"), "projection: plain"))
-      << "granular: not in a scene without a granular material";
-  EXPECT_TRUE(says(*projectionFor("incrementalPressure all;\n", "water"), "projection: incremental"));
-  EXPECT_TRUE(says(*projectionFor("incrementalPressure all;\n", "air"), "projection: plain"))
-      << "no deviatoric term to solve implicitly";
-  const auto gradient = projectionFor("incrementalPressure granular;\nlaggedPressure { form gradient; smoothing 3; }\n",
-                                      "sand");
-  EXPECT_TRUE(says(*gradient, "renormalised gradient of Eq. 11 of p^n after 3 Shepard passes")) << gradient->describe();
-}
-
-// An error at the line of the entry that would be ignored, saying what it needs.
-void expectConflict(const std::string& text, const std::string& material, const std::string& key, int line,
-                    const std::string& needs) {
-  try {
-    projectionFor(text, material);
-    FAIL() << "expected a FatalError for\n" << text;
-  } catch (const FatalError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("keyword '" + key + "'"), std::string::npos) << m;
-    EXPECT_NE(m.find(needs), std::string::npos) << m;
-    EXPECT_EQ(e.where().line, line) << m;
+TEST(Projection, PlainWithTheRenormalisedGradientInEveryScene) {
+  for (const char* material : {"sand", "water", "air"}) {
+    const auto p = projectionFor("", material);
+    EXPECT_TRUE(says(*p, "projection: plain")) << material << ": " << p->describe();
+    EXPECT_TRUE(says(*p, "renormalised")) << material << ": " << p->describe();
   }
+  EXPECT_TRUE(says(*projectionFor("viscousTerm explicit;\n", "sand"), "projection: plain"));
 }
 
-TEST(Projection, SettingsThatWouldBeIgnoredAreAnErrorAtTheirLine) {
-  expectConflict("viscousTerm explicit;\nincrementalPressure granular;\n", "sand", "incrementalPressure", 2,
-                 "viscousTerm implicit");
-  expectConflict("kernel WendlandC2;\nlaggedPressure { form gradient; }\n", "sand", "laggedPressure", 2,
-                 "incrementalPressure granular or all");
-  expectConflict("incrementalPressure all;\n\npressureGradient symmetric;\n", "sand", "pressureGradient", 3,
-                 "renormalised gradient of the increment");
-  expectConflict("incrementalPressure granular;\nwallFriction\n{\n    normalForce hydrostatic;\n}\n", "sand",
-                 "normalForce", 4, "laggedPressure { form gradient; }");
-  expectConflict("incrementalPressure granular;\nlaggedPressure\n{\n    smoothing 2;\n}\n", "sand", "smoothing", 4,
-                 "form gradient");
-  expectConflict("incrementalPressure granular;\nlaggedPressure { form gradient; smoothing 11; }\n", "sand",
-                 "smoothing", 2, "[0, 10]");
-  EXPECT_THROW(projectionFor("incrementalPressure granular;\nlaggedPressure { form divergence; }\n", "sand"),
-               FatalError);
-}
-
-TEST(Projection, SettingsThatGoTogetherAreAccepted) {
-  EXPECT_TRUE(says(*projectionFor("incrementalPressure granular;\npressureGradient symmetric;\n", "water"),
-                   "as the paper"))
-      << "the incremental projection does not act on water: the symmetric form is used";
-  EXPECT_NO_THROW(projectionFor("incrementalPressure granular;\nlaggedPressure { form gradient; }\n"
-                                "wallFriction { normalForce hydrostatic; }\n",
-                                "sand"));
-  EXPECT_NO_THROW(projectionFor("viscousTerm explicit;\npressureGradient symmetric;\n", "sand"));
+TEST(Projection, TheRemovedVariantsAreAnErrorAtTheirLine) {
+  const struct {
+    std::string text, key;
+    int line;
+  } cases[] = {{"kernel WendlandC2;\nincrementalPressure granular;\n", "incrementalPressure", 2},
+               {"laggedPressure\n{\n    form gradient;\n}\n", "laggedPressure", 1},
+               {"kernel WendlandC2;\n\npressureGradient symmetric;\n", "pressureGradient", 3},
+               {"pressureGradient renormalised;\n", "pressureGradient", 1}};
+  for (const auto& c : cases) {
+    try {
+      projectionFor(c.text, "sand");
+      FAIL() << "expected a FatalError for\n" << c.text;
+    } catch (const FatalError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("keyword '" + c.key + "'"), std::string::npos) << m;
+      EXPECT_NE(m.find("was removed"), std::string::npos) << m;
+      EXPECT_NE(m.find("remove the line"), std::string::npos) << m;
+      EXPECT_EQ(e.where().line, c.line) << m;
+    }
+  }
 }
 
 }  // namespace
