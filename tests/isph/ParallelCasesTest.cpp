@@ -255,9 +255,12 @@ ParallelCase columnCollapse() {
                                    {"area", area},
                                    {"surfaceRms", rmsDistance(surface, measured)}};
                   },
-                  // noise: toe 1.8e-8 m, height at the wall 2.3e-9 m, RMS 8.3e-9 m, area 3.2e-9 m^2;
-                  // on 2-3 ranks: 3.3e-8, 1.2e-9, 4.4e-9, 1.5e-9
-                  {{"toe", 1e-7}, {"heightAtWall", 1e-8}, {"area", 1e-8}, {"surfaceRms", 3e-8}},
+                  // noise with the one granular scheme set of issue 48 (the Noise test below,
+                  // 2026-12-06): toe 2.2e-8 m, height at the wall 7.9e-8 m, RMS 4.0e-7 m, area
+                  // 2.0e-7 m^2 (before it: 1.8e-8, 2.3e-9, 8.3e-9, 3.2e-9: the shifting by the
+                  // speed of deformation carries the solver's tolerance further); on 3 ranks:
+                  // 2.1e-8, 7.9e-8, 4.0e-7, 2.0e-7 (the same alternative as the tighter tolerance)
+                  {{"toe", 1e-7}, {"heightAtWall", 3e-7}, {"area", 6e-7}, {"surfaceRms", 1.2e-6}},
                   "HSFC"};
   return pc;
 }
