@@ -46,6 +46,22 @@ std::string nearestWord(std::string_view word, const std::vector<std::string>& c
   return best;
 }
 
+std::string nearestWithin(std::string_view word, const std::vector<std::string>& candidates, std::size_t maxEdits) {
+  if (word.empty() || word.size() > 256) return {};
+  const std::size_t limit = std::min(maxEdits, word.size() - 1);
+  std::string best;
+  std::size_t bestDistance = limit + 1;
+  for (const auto& candidate : candidates) {
+    if (candidate.size() > word.size() + limit || word.size() > candidate.size() + limit) continue;
+    const std::size_t d = editDistance(word, candidate);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
 std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates) {
   const std::string nearest = nearestWord(word, candidates);
   return nearest.empty() ? std::string{} : " (did you mean " + nearest + "?)";

@@ -82,7 +82,6 @@ class CaseRunner {
     std::ofstream(dir_ / file) << edited;
   }
 
-  // Appends `text` to a case file (e.g. an entry at the end of a dictionary).
   // A tutorial's variant (`./Allrun -<suffix>`): every system/X.<suffix> and constant/X.<suffix>
   // of the copy replaces X.
   void useVariant(const std::string& suffix) {
@@ -97,9 +96,14 @@ class CaseRunner {
     }
   }
 
+  // Appends `text` to a case file (e.g. an entry at the end of a dictionary).
   void append(const std::string& file, const std::string& text) {
     ASSERT_TRUE(std::filesystem::exists(dir_ / file)) << file << " not found";
-    std::ofstream(dir_ / file, std::ios::app) << "\n" << text << "\n";
+    // In a file of its own, #included at the end: its entries may override the file's (a key
+    // written twice in one file is an error).
+    const std::filesystem::path extra = dir_ / (file + ".append" + std::to_string(++appended_));
+    std::ofstream(extra) << text << "\n";
+    std::ofstream(dir_ / file, std::ios::app) << "\n#include \"" << extra.filename().string() << "\"\n";
   }
 
   // Runs an application in the case; returns its exit code (its log is log.<name>).
@@ -136,6 +140,7 @@ class CaseRunner {
 
  private:
   std::filesystem::path dir_;
+  int appended_ = 0;
 };
 
 // The largest distance any material particle has moved between two clouds of a case.

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 #include "core/Error.hpp"
 #include "isph/StepState.hpp"
@@ -69,7 +71,14 @@ TEST_P(StepStateTest, RoundTripsExactly) {
 
 TEST_P(StepStateTest, ADamagedStateIsAnErrorNamingItsFile) {
   writeStepState(dir_, sample(), GetParam());
-  std::ofstream(dir_ / "uniform" / "isphState", std::ios::app) << "\nmaxNu nan;\n";
+  // maxNu's value made nan (a second maxNu would be refused as a key given twice)
+  std::ifstream in(dir_ / "uniform" / "isphState");
+  std::stringstream text;
+  text << in.rdbuf();
+  in.close();
+  const std::string damaged = std::regex_replace(text.str(), std::regex("\nmaxNu[^;]*;"), "\nmaxNu nan;");
+  ASSERT_NE(damaged, text.str());
+  std::ofstream(dir_ / "uniform" / "isphState") << damaged;
   try {
     readStepState(dir_);
     ADD_FAILURE() << "no error";

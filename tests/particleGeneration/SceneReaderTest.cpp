@@ -211,9 +211,14 @@ TEST_F(SceneReader, LithostaticNeedsGravity) {
   expectAt(e, "particleMeshDict", lineOf(validDict, "initialPressure"));
 }
 
-TEST_F(SceneReader, UnknownKeywordIsAWarningWithASuggestion) {
-  c.write("system/particleMeshDict",
-          replaced(validDict, "material    clay;", "material    clay; initalVelocity (1 0 0);"));
+// A misspelt keyword (the region would start at rest) is an error at its line; an unknown one
+// far from every keyword a warning.
+TEST_F(SceneReader, MisspeltKeywordIsAnErrorUnknownOneAWarning) {
+  const std::string dict = replaced(validDict, "material    clay;", "material    clay; initalVelocity (1 0 0);");
+  const FatalError e = sceneError(c, dict);
+  EXPECT_NE(std::string(e.what()).find("did you mean initialVelocity?"), std::string::npos) << e.what();
+  expectAt(e, "particleMeshDict", lineOf(dict, "initalVelocity"));
+  c.write("system/particleMeshDict", replaced(validDict, "material    clay;", "material    clay; remark lens;"));
   const int before = warningCount();
   readScene(c.path());
   EXPECT_EQ(warningCount(), before + 1);

@@ -150,9 +150,17 @@ void Dictionary::checkKeywords(const std::vector<std::string>& alsoValid) const 
   const std::set<std::string_view> validSet(valid.begin(), valid.end());
   // A few warnings say what is wrong; thousands (a data file read as a dictionary) bury it.
   constexpr std::size_t maxWarnings = 20;
+  constexpr std::size_t maxTypoEdits = 2;
   std::size_t unknown = 0;
   for (const auto& e : entries_) {
-    if (e.key() == "FoamFile" || validSet.count(e.key())) continue;
+    if (e.key() == "FoamFile" || validSet.count(e.key()) || variables_.count(e.key())) continue;
+    if (const std::string near = nearestWithin(e.key(), valid, maxTypoEdits); !near.empty()) {
+      fatalIOError(e.location(),
+                   fmt::format("unknown keyword '{}' in dictionary {} (did you mean {}?): a misspelt keyword "
+                               "would leave the default of {} in force. (A name used only as a $variable "
+                               "is allowed.)",
+                               e.key(), name_, near, near));
+    }
     if (++unknown > maxWarnings) continue;
     warning(fmt::format("unknown keyword '{}' in dictionary {} is ignored{}", e.key(), name_,
                         didYouMean(e.key(), valid)),

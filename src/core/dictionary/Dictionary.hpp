@@ -7,7 +7,8 @@
 //   double endTime = controlDict.get<double>("endTime");
 //   double maxCo = controlDict.getOrDefault("maxCo", 0.2);   // default echoed in the log
 //   std::string w = controlDict.getChoice("writeControl", {"timeStep", "runTime"});
-//   controlDict.checkKeywords();   // warns about unknown keywords ("did you mean endTime?")
+//   controlDict.checkKeywords();   // unknown keywords: an error when one is a near miss of a
+//                                  // keyword read ("did you mean endTime?"), else a warning
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -105,11 +106,15 @@ class Dictionary {
   // The dimension set of an entry, if it has one.
   std::optional<DimensionSet> getDimensions(std::string_view key) const;
 
-  // Warn about every entry that the code never asked for, with the nearest keyword it
-  // did ask for ("did you mean endTime?"). Call once a dictionary has been fully read.
+  // Every entry that the code never asked for: a FatalError when it is within two edits of a
+  // keyword it did ask for (a misspelt keyword would otherwise leave its default in force:
+  // "did you mean endTime?"), a warning otherwise. An entry used as a $variable is neither.
+  // Call once a dictionary has been fully read.
   void checkKeywords(const std::vector<std::string>& alsoValid = {}) const;
   // Record that `key` is valid here although the code has not read it (yet).
   void markRead(std::string_view key) const { queried_.insert(std::string(key)); }
+  // Record that `key` was used as a $variable (the parser does): no keyword of the code's.
+  void markVariable(std::string_view key) const { variables_.insert(std::string(key)); }
 
   // Programmatic construction (used to write dictionaries such as <time>/uniform/time).
   template <class T>
@@ -143,6 +148,7 @@ class Dictionary {
   std::vector<Entry> entries_;
   std::unordered_map<std::string, std::size_t, KeyHash, std::equal_to<>> index_;  // key -> entries_ position
   mutable std::set<std::string, std::less<>> queried_;
+  mutable std::set<std::string, std::less<>> variables_;
 };
 
 // ---- template implementations ------------------------------------------------------

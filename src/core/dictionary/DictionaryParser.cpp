@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 
 #include "core/EtcFiles.hpp"
 #include "core/Strings.hpp"
@@ -109,8 +110,10 @@ class Parser {
   std::size_t offset() const { return lexer_.offset(); }
 
  private:
-  void parseEntry(Dictionary& dict, Token key);
-  void parseDirective(Dictionary& dict, const Token& directive);
+  // `written`: the keywords written so far in this dictionary's own text (not those of an
+  // #include or a $ expansion, which an entry may override): a second one is an error.
+  void parseEntry(Dictionary& dict, Token key, std::set<std::string, std::less<>>& written);
+  void parseDirective(Dictionary& dict, const Token& directive, std::set<std::string, std::less<>>& written);
   void includeFile(Dictionary& dict, const std::filesystem::path& path, const Token& where, bool optional);
   const Entry& resolve(const Token& variable) const;
   const Entry* lookupPath(const Dictionary* start, std::size_t scopeIndex, std::string_view path,
@@ -137,6 +140,7 @@ void Parser::checkNesting(int depth, const SourceLocation& where, const std::str
 
 void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntryOnly) {
   scopes_.push_back(&dict);
+  std::set<std::string, std::less<>> written;
   for (;;) {
     std::optional<Token> t = lexer_.next();
     if (!t) {
@@ -152,7 +156,7 @@ void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntry
     }
     if (t->isPunct(';')) continue;  // a stray ';' is harmless
     if (t->kind == TokenKind::Directive) {
-      parseDirective(dict, *t);
+      parseDirective(dict, *t, written);
     } else if (t->kind == TokenKind::Variable) {
       // `$dict;` at keyword position merges that dictionary's entries here.
       const Entry& source = resolve(*t);
@@ -168,7 +172,7 @@ void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntry
       for (const auto& e : copy.entries()) dict.add(e);
       if (auto p = lexer_.peek(); p && p->isPunct(';')) lexer_.next();
     } else if (t->isWord() || t->isString() || t->isNumber()) {
-      parseEntry(dict, std::move(*t));
+      parseEntry(dict, std::move(*t), written);
     } else {
       fatalIOError(t->loc, fmt::format("expected a keyword, found {}", t->describe()));
     }
@@ -177,7 +181,16 @@ void Parser::parseBody(Dictionary& dict, const Token* openBrace, bool firstEntry
   scopes_.pop_back();
 }
 
-void Parser::parseEntry(Dictionary& dict, Token key) {
+void Parser::parseEntry(Dictionary& dict, Token key, std::set<std::string, std::less<>>& written) {
+  if (!written.insert(key.text).second) {
+    const Entry* first = dict.findEntry(key.text);
+    fatalIOError(key.loc, fmt::format("keyword '{}' is given twice in dictionary {}{}: which one was meant? "
+                                      "(Keep one; an entry from an #include may be overridden.)",
+                                      key.text, dict.name(),
+                                      first && first->location().known()
+                                          ? fmt::format(" (first at line {})", first->location().line)
+                                          : std::string()));
+  }
   std::optional<Token> t = lexer_.peek();
   if (t && t->isPunct('{')) {
     const Token open = *lexer_.next();
@@ -262,7 +275,7 @@ void Parser::parseEntry(Dictionary& dict, Token key) {
   dict.add(Entry(key.text, key.loc, std::move(tokens)));
 }
 
-void Parser::parseDirective(Dictionary& dict, const Token& directive) {
+void Parser::parseDirective(Dictionary& dict, const Token& directive, std::set<std::string, std::less<>>& written) {
   const std::string& name = directive.text;
   if (name == "include" || name == "includeEtc" || name == "includeIfPresent") {
     std::optional<Token> file = lexer_.next();
@@ -279,10 +292,14 @@ void Parser::parseDirective(Dictionary& dict, const Token& directive) {
   } else if (name == "remove") {
     std::optional<Token> t = lexer_.next();
     if (t && t->isPunct('(')) {
-      for (t = lexer_.next(); t && !t->isPunct(')'); t = lexer_.next()) dict.remove(t->text);
+      for (t = lexer_.next(); t && !t->isPunct(')'); t = lexer_.next()) {
+        dict.remove(t->text);
+        written.erase(t->text);
+      }
       if (!t) fatalIOError(directive.loc, "#remove ( ... ): the list is not closed");
     } else if (t && (t->isWord() || t->isString())) {
       dict.remove(t->text);
+      written.erase(t->text);
     } else {
       fatalIOError(directive.loc, "#remove must be followed by a keyword or a list of keywords");
     }
@@ -333,12 +350,17 @@ const Entry* Parser::lookupPath(const Dictionary* start, std::size_t scopeIndex,
       rest = path.substr(cut + 1);
     }
     const Entry* e = nullptr;
+    const Dictionary* holder = start;
     if (searchUp) {
-      for (std::size_t k = scopeIndex + 1; k-- > 0 && !e;) e = scopes_[k]->findEntry(first);
+      for (std::size_t k = scopeIndex + 1; k-- > 0 && !e;) {
+        holder = scopes_[k];
+        e = holder->findEntry(first);
+      }
     } else {
       e = start->findEntry(first);
     }
     if (!e) continue;
+    holder->markVariable(first);  // a name used as $variable is no misspelt keyword
     if (!separator) return e;
     if (!e->isDict()) continue;
     if (const Entry* found = lookupPath(&e->dict(), 0, rest, false)) return found;

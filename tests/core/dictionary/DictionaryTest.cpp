@@ -206,18 +206,64 @@ TEST(Dictionary, WriteThenParseRoundTrips) {
   EXPECT_TRUE(back.subDict("sub").get<bool>("flag"));
 }
 
-TEST(Dictionary, UnknownKeywordWarnsWithNearestValidKeyword) {
+// A misspelt keyword would leave the default in force (maxCO: the run used maxCo 1): an error.
+TEST(Dictionary, MisspeltKeywordIsAnErrorWithTheNearestValidKeyword) {
   const auto d = Dictionary::parse("endTim 2;\nwriteInterval 1;\napplication x;\n", "system/controlDict");
   (void)d.getOrDefault("endTime", 1.0);
   (void)d.get<int>("writeInterval");
+  test::expectErrorAt(test::expectFatal([&] { d.checkKeywords({"application"}); }), "system/controlDict", 1,
+                      {"unknown keyword 'endTim'", "did you mean endTime?"});
+  const auto c = Dictionary::parse("maxCo 0.5;\nmaxCO 0.2;\n", "system/controlDict");
+  (void)c.getOrDefault("maxCo", 1.0);
+  test::expectErrorAt(test::expectFatal([&] { c.checkKeywords(); }), "system/controlDict", 2,
+                      {"'maxCO'", "did you mean maxCo?"});
+}
+
+// Three edits or more from every keyword read: a warning, the run goes on.
+TEST(Dictionary, UnknownKeywordFarFromEveryKeywordWarns) {
+  const auto d = Dictionary::parse("endTime 2;\nnotes none;\n", "system/controlDict");
+  (void)d.get<double>("endTime");
   const int before = warningCount();
   testing::internal::CaptureStderr();
-  d.checkKeywords({"application"});
+  d.checkKeywords();
   const std::string err = testing::internal::GetCapturedStderr();
   EXPECT_EQ(warningCount(), before + 1);
-  EXPECT_NE(err.find("endTim"), std::string::npos) << err;
-  EXPECT_NE(err.find("did you mean endTime?"), std::string::npos) << err;
-  EXPECT_NE(err.find("system/controlDict, line 1"), std::string::npos) << err;
+  EXPECT_NE(err.find("unknown keyword 'notes'"), std::string::npos) << err;
+  EXPECT_NE(err.find("system/controlDict, line 2"), std::string::npos) << err;
+}
+
+// A name used as a $variable is the user's own, however close to a keyword: no error, no warning.
+TEST(Dictionary, NameUsedAsVariableIsAllowed) {
+  const auto d = Dictionary::parse("maxCo0 0.3;\nmaxCo $maxCo0;\nsub { rhoo 2; rho $rhoo; }\n", "system/controlDict");
+  EXPECT_DOUBLE_EQ(d.getOrDefault("maxCo", 1.0), 0.3);
+  EXPECT_DOUBLE_EQ(d.subDict("sub").get<double>("rho"), 2.0);
+  const int before = warningCount();
+  d.checkKeywords();
+  d.subDict("sub").checkKeywords();
+  EXPECT_EQ(warningCount(), before);
+}
+
+TEST(Dictionary, KeyGivenTwiceIsAnError) {
+  test::expectErrorAt(test::expectFatal([] { Dictionary::parse("a 1;\nb 2;\na 3;\n", "d"); }), "d", 3,
+                      {"keyword 'a' is given twice", "first at line 1"});
+  test::expectErrorAt(test::expectFatal([] { Dictionary::parse("s\n{\n  x 1;\n  x 1;\n}\n", "d"); }), "d", 4,
+                      {"'x' is given twice", "dictionary d/s"});
+  test::expectErrorAt(test::expectFatal([] { Dictionary::parse("s { x 1; }\ns { y 1; }\n", "d"); }), "d", 2,
+                      {"'s' is given twice"});
+}
+
+// What an #include or a $ expansion brings in may be overridden (the tutorials include
+// etc/caseDicts/schemes/granular and change an entry); #remove then a new entry is no duplicate.
+TEST(Dictionary, OverridingAnIncludedOrExpandedEntryIsAllowed) {
+  test::TempDir dir;
+  dir.write("defaults", "a 1;\nb 2;\n");
+  const auto main = dir.write("dict", "#include \"defaults\"\na 3;\nbase { c 1; }\nsub { $base; c 2; }\n"
+                                      "d 1;\n#remove d\nd 2;\n");
+  const auto d = Dictionary::readFile(main);
+  EXPECT_EQ(d.get<int>("a"), 3);
+  EXPECT_EQ(d.get<int>("b"), 2);
+  EXPECT_EQ(d.subDict("sub").get<int>("c"), 2);
+  EXPECT_EQ(d.get<int>("d"), 2);
 }
 
 }  // namespace

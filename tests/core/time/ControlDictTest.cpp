@@ -102,13 +102,21 @@ void expectInvalid(const std::string& text, int line, const std::string& keyword
 const std::string base =
     "startFrom startTime;\nstartTime 1;\nendTime 2;\ndeltaT 0.1;\nwriteInterval 5;\n";
 
+// `base` with the line of `key` commented out (a key given twice is an error), so that the
+// entry appended after it stands alone at line 6.
+std::string without(const std::string& key) {
+  std::string text = base;
+  text.insert(text.find("\n" + key + " ") + 1, "// ");
+  return text;
+}
+
 TEST(ControlDict, ValidationErrors) {
   expectInvalid("startFrom startTime;\nstartTime 3;\nendTime 2;\ndeltaT 0.1;\nwriteInterval 5;\n",
                 3, "endTime", "before startTime");
-  expectInvalid(base + "deltaT 0;\n", 6, "deltaT", "must be positive");
-  expectInvalid(base + "deltaT -1e-3;\n", 6, "deltaT", "must be positive");
-  expectInvalid(base + "writeInterval 0;\n", 6, "writeInterval", "must be positive");
-  expectInvalid(base + "writeInterval 2.5;\n", 6, "writeInterval", "whole number of time steps");
+  expectInvalid(without("deltaT") + "deltaT 0;\n", 6, "deltaT", "must be positive");
+  expectInvalid(without("deltaT") + "deltaT -1e-3;\n", 6, "deltaT", "must be positive");
+  expectInvalid(without("writeInterval") + "writeInterval 0;\n", 6, "writeInterval", "must be positive");
+  expectInvalid(without("writeInterval") + "writeInterval 2.5;\n", 6, "writeInterval", "whole number of time steps");
   expectInvalid(base + "purgeWrite -1;\n", 6, "purgeWrite", "0 (keep all) or more");
   expectInvalid(base + "writePrecision 0;\n", 6, "writePrecision", "between 1 and 17");
   expectInvalid(base + "timePrecision 18;\n", 6, "timePrecision", "between 1 and 17");
@@ -122,7 +130,7 @@ TEST(ControlDict, ValidationErrors) {
 }
 
 TEST(ControlDict, FractionalWriteIntervalIsFineForRunTime) {
-  EXPECT_DOUBLE_EQ(readText(base + "writeControl runTime;\nwriteInterval 0.25;\n").writeInterval,
+  EXPECT_DOUBLE_EQ(readText(without("writeInterval") + "writeControl runTime;\nwriteInterval 0.25;\n").writeInterval,
                    0.25);
 }
 

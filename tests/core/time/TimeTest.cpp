@@ -398,18 +398,27 @@ TEST(Time, TimePrecisionGrowsWhenNamesWouldCollide) {
   EXPECT_NE(err.find("timePrecision from 6 to 8"), std::string::npos) << err;
 }
 
-TEST(Time, UnknownKeywordsAreWarnedOthersAccepted) {
+TEST(Time, MisspeltKeywordIsAnErrorOthersAccepted) {
   test::TempCase c;
   writeControlDict(c,
                    "application isphFoam; libs (); functions { probes { type probes; } }\n"
                    "endTime 1; deltaT 0.1; writeInterval 1; writeIntervall 2;\n");
+  try {
+    Time t(c.path());
+    ADD_FAILURE() << "writeIntervall accepted";
+  } catch (const FatalError& e) {
+    EXPECT_NE(e.report().find("writeIntervall"), std::string::npos) << e.report();
+    EXPECT_NE(e.report().find("did you mean writeInterval"), std::string::npos) << e.report();
+  }
+  writeControlDict(c,
+                   "application isphFoam; libs (); functions { probes { type probes; } }\n"
+                   "endTime 1; deltaT 0.1; writeInterval 1; remark none;\n");
   const int warnings = warningCount();
   testing::internal::CaptureStderr();
   Time t(c.path());
   const std::string err = testing::internal::GetCapturedStderr();
   EXPECT_EQ(warningCount(), warnings + 1);
-  EXPECT_NE(err.find("writeIntervall"), std::string::npos) << err;
-  EXPECT_NE(err.find("did you mean writeInterval"), std::string::npos) << err;
+  EXPECT_NE(err.find("unknown keyword 'remark'"), std::string::npos) << err;
   EXPECT_TRUE(t.controlDict().isDict("functions"));
 }
 
