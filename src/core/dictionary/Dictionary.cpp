@@ -116,6 +116,7 @@ std::optional<DimensionSet> Dictionary::getDimensions(std::string_view key) cons
 
 std::string Dictionary::getChoice(std::string_view key, const std::vector<std::string>& choices) const {
   queried_.insert(std::string(key));
+  recordChoices(name_, key, choices);
   const std::string expected = "one of " + join(choices, "|");
   const Entry& e = entry(key, expected);
   if (e.isDict()) fatalIOError(e.location(), fmt::format("{}: expected {}, found a sub-dictionary", context(key), expected));
@@ -133,6 +134,8 @@ std::string Dictionary::getChoice(std::string_view key, const std::vector<std::s
 std::string Dictionary::getChoiceOrDefault(std::string_view key, const std::vector<std::string>& choices,
                                            const std::string& fallback) const {
   queried_.insert(std::string(key));
+  recordChoices(name_, key, choices);
+  recordDefault(name_, key, fallback);
   if (found(key)) return getChoice(key, choices);
   echoDefault(key, fallback);
   return fallback;

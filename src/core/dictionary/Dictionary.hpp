@@ -20,6 +20,7 @@
 
 #include "core/Log.hpp"
 #include "core/dictionary/DictionaryLimits.hpp"
+#include "core/dictionary/KeywordRecord.hpp"
 #include "core/dictionary/Token.hpp"
 #include "core/dictionary/ValueTraits.hpp"
 
@@ -156,6 +157,7 @@ class Dictionary {
 template <class T>
 T Dictionary::get(std::string_view key) const {
   queried_.insert(std::string(key));
+  recordKeyword(name_, key);
   const Entry& e = entry(key, ValueTraits<T>::expected());
   if (e.isDict()) {
     fatalIOError(e.location(), fmt::format("{}: expected {}, found a sub-dictionary", context(key),
@@ -170,6 +172,7 @@ T Dictionary::get(std::string_view key) const {
 template <class T>
 std::optional<T> Dictionary::getOptional(std::string_view key) const {
   queried_.insert(std::string(key));
+  recordKeyword(name_, key);
   if (!found(key)) return std::nullopt;
   return get<T>(key);
 }
@@ -177,6 +180,7 @@ std::optional<T> Dictionary::getOptional(std::string_view key) const {
 template <class T>
 T Dictionary::getOrDefault(std::string_view key, const T& fallback) const {
   queried_.insert(std::string(key));
+  if (keywordRecordOn()) recordDefault(name_, key, ValueTraits<T>::write(fallback));
   if (found(key)) return get<T>(key);
   echoDefault(key, ValueTraits<T>::write(fallback));
   return fallback;

@@ -9,6 +9,7 @@
 namespace isph {
 
 inline void requireRange(const Dictionary& d, const char* key, double value, double lo, double hi) {
+  recordRange(d.name(), key, lo, hi);
   if (value < lo || value > hi) {
     const Entry* e = d.findEntry(key);
     fatalIOError(e ? e->location() : d.location(),
