@@ -33,8 +33,12 @@ const Dictionary& entryDict(const Entry& e, const Dictionary& parent, const char
   return e.dict();
 }
 
-void readLattice(const Dictionary& dict, Scene& scene) {
+void readLattice(const Dictionary& dict, std::optional<double> spacing, Scene& scene) {
   scene.spacing = dict.get<double>("spacing");
+  if (spacing) {
+    if (!(*spacing > 0)) fatalError(fmt::format("option -spacing: must be positive, found {}", *spacing));
+    scene.spacing = *spacing;
+  }
   if (!(scene.spacing > 0))
     invalid(dict, "spacing", fmt::format("must be positive, found {}", scene.spacing));
   scene.spacingWhere = dict.findEntry("spacing")->location();
@@ -209,11 +213,11 @@ int kernelWallLayers(double supportRadius, double dx) {
   return std::max(1, static_cast<int>(std::ceil(supportRadius / dx - 1e-9)));
 }
 
-Scene readScene(const std::filesystem::path& caseDir) {
+Scene readScene(const std::filesystem::path& caseDir, std::optional<double> spacing) {
   const Dictionary dict = Dictionary::readFile(caseDir / "system" / "particleMeshDict");
   Scene scene;
   const ShapeContext context{caseDir};
-  readLattice(dict, scene);
+  readLattice(dict, spacing, scene);
   readWallLayers(dict, caseDir, scene);
   readTransform(dict, scene);
   const Vec3 initialVelocity = dict.getOrDefault<Vec3>("initialVelocity", Vec3::Zero());

@@ -52,12 +52,15 @@
 // (optional) and constant/g (for lithostatic pressure). Every default used is echoed in the
 // log; every bad input is a FatalIOError naming the file, line and keyword.
 #include <filesystem>
+#include <optional>
 
 #include "particleGeneration/Scene.hpp"
 
 namespace isph {
 
-Scene readScene(const std::filesystem::path& caseDir);
+// The scene of system/particleMeshDict; `spacing`, if given, in place of the file's (the same
+// scene at another resolution: particleMesh -spacing, the tutorials' -test runs).
+Scene readScene(const std::filesystem::path& caseDir, std::optional<double> spacing = std::nullopt);
 
 // ceil(support radius / dx): the wall + dummy layers that fill the kernel support.
 int kernelWallLayers(double supportRadius, double dx);

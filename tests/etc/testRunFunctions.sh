@@ -126,9 +126,11 @@ counter="$scratch/counter"
 : > "$counter"
 # A shell-function "application": counts its runs, writes to stdout and stderr
 fakeApp() {
+    echo "Exec     : fakeApp $*"   # the banner's line, as the toolkit's applications write it
     echo run >> "$counter"
     echo "fakeApp stdout $* run $(wc -l < "$counter")"
     echo "fakeApp stderr" >&2
+    echo End   # as the toolkit's applications end a finished run's log
 }
 failingApp() {
     echo "something went wrong"
@@ -146,27 +148,65 @@ check "log.fakeApp holds the app's stdout with arguments" \
 check "log.fakeApp holds the app's stderr" grep -qx "fakeApp stderr" log.fakeApp
 
 cp log.fakeApp "$scratch/log.saved"
-msg=$(runApplication fakeApp arg1 arg2)
+# (a new script: sourcing RunFunctions again, as an Allrun does; in the same one, a step after
+# one that ran runs too)
+msg=$(. "$runFunctions"; runApplication fakeApp arg1 arg2)
 rc=$?
 check "second runApplication returns 0" test "$rc" = 0
 check "second runApplication says already run [got '$msg']" \
-    test "$msg" = "fakeApp already run on $caseDir: remove log file 'log.fakeApp' to re-run"
+    test "$msg" = "fakeApp already run on $caseDir: it finished, and nothing it reads changed since (remove log file 'log.fakeApp' to re-run)"
 check "second runApplication leaves the log untouched" cmp -s log.fakeApp "$scratch/log.saved"
 check "second runApplication does not run the app" test "$(wc -l < "$counter")" = 1
 
+echo "== runApplication: runs again what may have changed"
+# Each case as a new script would meet it (RunFunctions sourced afresh).
+again() { (. "$runFunctions"; runApplication "$@") 2>&1; }
+msg=$(again fakeApp arg1)
+check "other arguments: runs again, saying so [got '$msg']" \
+    eval 'grep -q "^Running fakeApp again on $caseDir: other arguments" <<< "$msg" && test "$(wc -l < "$counter")" = 2'
+(. "$runFunctions"; runApplication -s next fakeApp >/dev/null)
+msg=$(. "$runFunctions"; runApplication -o fakeApp arg1; runApplication -s next fakeApp)
+check "a step after one that ran runs too [got '$msg']" \
+    eval 'grep -q "^Running fakeApp again on $caseDir: an earlier step ran again" <<< "$msg" && test "$(wc -l < "$counter")" = 5'
+msg=$(. "$runFunctions"; runApplication fakeApp arg1; runApplication -s next fakeApp)
+check "... and is skipped when nothing before it ran" \
+    eval 'test "$(grep -c "already run" <<< "$msg")" = 2 && test "$(wc -l < "$counter")" = 5'
+sleep 0.05; touch constant/edited
+msg=$(again fakeApp arg1)
+check "an input newer than the log: runs again [got '$msg']" \
+    grep -q "^Running fakeApp again on $caseDir: constant/edited changed since its last run" <<< "$msg"
+rm -f constant/edited
+printf 'Exec     : fakeApp arg1\nTime = 0.92\n' > log.fakeApp
+msg=$(again fakeApp arg1)
+check "a log that does not end with End (a stopped run): runs again [got '$msg']" \
+    grep -q "^Running fakeApp again on $caseDir: its last run did not finish" <<< "$msg"
+check "... and the log is the new run's" grep -qx End log.fakeApp
+printf 'Exec     : fakeApp arg1\nCase     : /elsewhere/barrier\nEnd\n' > log.fakeApp
+msg=$(again fakeApp arg1)
+rc=$?
+check "a log of another case (a copied case): refused [status $rc]" test "$rc" = 1
+check "... with the advice to clean or clone [got '${msg%%$'\n'*}']" \
+    eval 'grep -q "run in another case (/elsewhere/barrier)" <<< "$msg" && grep -q "isphCloneCase" <<< "$msg"'
+check "... and the app not run" grep -q "^Case     : /elsewhere/barrier" log.fakeApp
+warnApp() { printf -- '--> Warning: rho 1.379 outside 500 to 5000\n--> Note: g implies a slope of 45 deg\n--> Warning: second\nEnd\n'; }
+msg=$(again warnApp)
+check "the warnings counted on the terminal [got '$msg']" grep -qx "    2 warnings: see log.warnApp" <<< "$msg"
+check "... the first of them shown" grep -qx "    warning: rho 1.379 outside 500 to 5000" <<< "$msg"
+check "... and the notes" grep -qx "    g implies a slope of 45 deg" <<< "$msg"
+
 runApplication -o fakeApp again >/dev/null
 check "-o overwrites the log" \
-    test "$(cat log.fakeApp)" = "$(printf 'fakeApp stdout again run 2\nfakeApp stderr')"
+    test "$(cat log.fakeApp)" = "$(printf 'Exec     : fakeApp again\nfakeApp stdout again run 8\nfakeApp stderr\nEnd')"
 runApplication -overwrite fakeApp >/dev/null
-check "-overwrite overwrites the log" grep -q "run 3" log.fakeApp
-check "-overwrite left no old content" eval '! grep -q "run 2" log.fakeApp'
+check "-overwrite overwrites the log" grep -q "run 9" log.fakeApp
+check "-overwrite left no old content" eval '! grep -q "run 8" log.fakeApp'
 
 runApplication -a fakeApp more >/dev/null
 check "-a appends to the log" \
-    eval 'grep -q "run 3" log.fakeApp && grep -q "more run 4" log.fakeApp'
+    eval 'grep -q "run 9" log.fakeApp && grep -q "more run 10" log.fakeApp'
 
 runApplication -s second fakeApp >/dev/null
-check "-s suffix writes log.fakeApp.second" grep -q "run 5" log.fakeApp.second
+check "-s suffix writes log.fakeApp.second" grep -q "run 11" log.fakeApp.second
 
 runApplication sh -c 'echo from a real executable' >/dev/null
 check "runApplication runs executables (log.sh)" grep -qx "from a real executable" log.sh
@@ -401,8 +441,9 @@ shOut=$(
         . "$ISPH_ETC/RunFunctions" || exit 10
         echo "dir=$ISPH_PROJECT_DIR"
         echo "app=$(getApplication)"
-        runApplication echo hello
-        runApplication echo hello
+        runApplication echo End
+        . "$ISPH_ETC/RunFunctions"
+        runApplication echo End
         runApplication -s x false; echo "rc=$?"
         cleanCase
         ls -d 0* 2>/dev/null

@@ -7,7 +7,8 @@
 // Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) writes the time at the end of the step
 // and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
 // stops as well. At start it refuses an endTime not after the start time, a writeInterval
-// shorter than the step and particles outside the scene (isph/StartupChecks.hpp).
+// shorter than the step and particles outside the scene (isph/StartupChecks.hpp), and a scene
+// edited since particleMesh made 0/ unless -force (isph/SceneUpToDate.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 // With -parallel it runs on the ranks of mpirun -np N (doc/parallel.md: decomposePar first, or
@@ -17,14 +18,17 @@
 
 #include <chrono>
 #include <ctime>
+#include <iostream>
 #include <optional>
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/OutOfMemory.hpp"
 #include "core/app/ResourceUsage.hpp"
+#include "core/dictionary/KeywordRecord.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
+#include "isph/SceneUpToDate.hpp"
 #include "isph/StartupChecks.hpp"
 #include "isph/StepWithRetry.hpp"
 #include "isph/solvers/ParticleSolver.hpp"
@@ -38,7 +42,8 @@ namespace {
 const isph::ApplicationSpec spec{
     .name = "isphLandslideFoam",
     .description = "Incompressible SPH (projection method) for flow-like landslides and fluids.",
-    .options = {},
+    .options = {{"force", "", "run although system/particleMeshDict is newer than the particles of 0/"},
+                {"listKeywords", "", "print every entry it reads from the case's dictionaries (its default, choices or range) and stop"}},
     .arguments = {},
     .parallel = true,
     .recovery = isph::CaseRecovery::allHosts,
@@ -51,6 +56,9 @@ void run(const isph::ArgList& args) {
                                  "runParallel), or without mpirun for a serial run",
                                  isph::nRanks(), isph::nRanks(), spec.name));
   }
+  const bool listKeywords = args.found("listKeywords");  // the keyword reference (doc/keywords.md)
+  if (listKeywords) isph::enableKeywordRecord();
+  isph::checkSceneUpToDate(args.casePath(), args.found("force"));  // an edited scene needs particleMesh again
   isph::Time time(args.casePath(), parallel ? isph::processorName(isph::thisRank()) : std::string());
   isph::Time::installSignalHandlers();
   isph::checkEndTime(time);
@@ -67,6 +75,10 @@ void run(const isph::ArgList& args) {
                time.settings().writePrecision);
   }
 
+  if (listKeywords) {
+    std::cout << isph::keywordReference();
+    return;
+  }
   isph::info("\nStarting time loop\n");
   isph::ProgressReporter progress(spec.name, time.value());
   const auto loopStart = std::chrono::steady_clock::now();

@@ -5,6 +5,10 @@
 //
 //   particleMesh           # 0/lagrangian/particles/{positions,origId,U,p,material,kind,...}
 //   particleMesh -csv      # also postProcessing/particleMesh/<cloud>.csv, for a first look
+//   particleMesh -spacing 0.0108   # the scene at another spacing (the file unchanged)
+//
+// A case with later times (a run of the old particles) keeps its 0/ unless -force: the
+// solver's 'startFrom latestTime' would go on with the old run.
 //
 // Keywords: src/particleGeneration/SceneReader.hpp; what is done: ParticleGenerator.hpp.
 #include <filesystem>
@@ -12,9 +16,12 @@
 
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
+#include "core/Strings.hpp"
 #include "core/app/OutOfMemory.hpp"
+#include "core/time/TimeName.hpp"
 #include "core/io/ReadFile.hpp"
 #include "core/dictionary/Dictionary.hpp"
+#include "core/dictionary/KeywordRecord.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particleGeneration/CsvExport.hpp"
 #include "particleGeneration/GenerationReport.hpp"
@@ -32,7 +39,10 @@ const isph::ApplicationSpec spec{
         "0/lagrangian/<cloud>.",
     .options = {{"csv", "",
                  "also write postProcessing/particleMesh/<cloud>.csv "
-                 "(x,y,z,kind,material,patch,nx,ny,mass,p)"}},
+                 "(x,y,z,kind,material,patch,nx,ny,mass,p)"},
+                {"spacing", "m", "the particle spacing in place of the one in system/particleMeshDict"},
+                {"force", "", "replace 0/ although the case holds later times (a run of the old particles)"},
+                {"listKeywords", "", "print every entry it reads from the case's dictionaries (its default, choices or range) and stop"}},
     .arguments = {},
     .timeOptions = false,
     .banner = true,
@@ -60,9 +70,56 @@ isph::FieldWriteOptions writeOptions(const std::filesystem::path& caseDir) {
   return options;
 }
 
+// The value of option -spacing, if given.
+std::optional<double> spacingOption(const isph::ArgList& args) {
+  const auto text = args.option("spacing");
+  if (!text) return std::nullopt;
+  double value = 0;
+  if (!isph::parseTimeName(*text, value) || !(value > 0)) {
+    isph::fatalError(fmt::format("option -spacing expects a positive number in metres, found '{}'", *text));
+  }
+  return value;
+}
+
+// The times after 0 in the case and in its processor directories: a run of the particles in 0/.
+std::vector<std::string> laterTimes(const std::filesystem::path& caseDir) {
+  std::vector<std::string> later;
+  std::vector<std::filesystem::path> dirs{caseDir};
+  for (const auto& e : std::filesystem::directory_iterator(caseDir)) {
+    if (e.is_directory() && e.path().filename().string().starts_with("processor")) dirs.push_back(e.path());
+  }
+  for (const auto& dir : dirs) {
+    for (const auto& t : isph::listTimes(dir)) {
+      if (t.value > 0) later.push_back((dir == caseDir ? "" : dir.filename().string() + "/") + t.name);
+    }
+  }
+  return later;
+}
+
+void refuseToReplaceARun(const isph::ArgList& args) {
+  const auto later = laterTimes(args.casePath());
+  if (later.empty() || args.found("force")) return;
+  isph::fatalError(fmt::format(
+      "the case holds later times ({}{}): a run of the particles in 0/. New particles would not "
+      "match them, and the solver's 'startFrom latestTime' would go on with the old run.\n"
+      "    Remove them first (./Allclean, or clone the case: isphCloneCase <case> <copy>), or replace 0/ "
+      "all the same with particleMesh -force",
+      isph::join(std::vector<std::string>(later.begin(), later.begin() + std::min<std::size_t>(later.size(), 3)),
+                 ", "),
+      later.size() > 3 ? fmt::format(", ... {} in all", later.size()) : std::string()));
+}
+
 void run(const isph::ArgList& args) {
   const std::filesystem::path& caseDir = args.casePath();
-  const isph::Scene scene = isph::readScene(caseDir);
+  if (args.found("listKeywords")) {  // the keyword reference (doc/keywords.md): read, print, stop
+    isph::enableKeywordRecord();
+    (void)isph::readScene(caseDir, spacingOption(args));
+    (void)writeOptions(caseDir);
+    std::cout << isph::keywordReference();
+    return;
+  }
+  refuseToReplaceARun(args);
+  const isph::Scene scene = isph::readScene(caseDir, spacingOption(args));
   const isph::FieldWriteOptions options = writeOptions(caseDir);
   isph::logScene(scene);
 

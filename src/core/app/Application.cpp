@@ -12,6 +12,7 @@
 #include "core/app/Banner.hpp"
 #include "core/app/OutOfMemory.hpp"
 #include "core/io/StagingRecovery.hpp"
+#include "core/time/Time.hpp"
 
 namespace isph {
 
@@ -57,7 +58,9 @@ int runApplication(const ApplicationSpec& spec, int argc, const char* const* arg
     if (banner) std::cout << isph::banner(args) << '\n';
     recoverCase(spec, args);
     body(args);
-    if (banner) std::cout << "\nEnd\n" << std::flush;
+    // "End" closes the log of a finished run only: runApplication (etc/RunFunctions) skips a
+    // step whose log ends so, and runs again one stopped by a signal.
+    if (banner && !Time::stopRequested()) std::cout << "\nEnd\n" << std::flush;
     return 0;
   } catch (const HelpRequested& help) {
     std::cout << help.usage << std::flush;
