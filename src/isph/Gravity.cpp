@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/Log.hpp"
+#include "core/Plausibility.hpp"
 #include "core/dictionary/Dictionary.hpp"
 
 namespace isph {
@@ -17,6 +19,11 @@ Vec3 readGravity(const std::filesystem::path& caseDir) {
   }
   const Vec3 g = d.get<Vec3>("value");
   d.checkKeywords();
+  warnIfImplausibleGravity(g, d.findEntry("value")->location());
+  // (a note: runApplication shows it on the terminal)
+  info("--> Note: g = ({:.4g} {:.4g} {:.4g}) m/s^2, |g| = {:.4g} m/s^2: {:.1f} deg from -y, the slope of a bed "
+       "along x",
+       g.x(), g.y(), g.z(), g.norm(), slopeFromGravity(g));
   return g;
 }
 

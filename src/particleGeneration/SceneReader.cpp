@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/Log.hpp"
+#include "core/Plausibility.hpp"
 #include "core/Registry.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "particleGeneration/SceneMaterials.hpp"
@@ -185,6 +186,8 @@ void readWalls(const Dictionary& dict, const ShapeContext& context, Scene& scene
     const double phi = d.get<double>("frictionAngle");
     if (!(phi >= 0 && phi < 90))
       invalid(d, "frictionAngle", fmt::format("must be in [0, 90) degrees, found {}", phi));
+    warnIfImplausibleFrictionAngle(phi, fmt::format("wall '{}': frictionAngle", e.key()),
+                                   d.findEntry("frictionAngle")->location(), true);
     w.patch = patchLabel(scene, d.getOrDefault<std::string>("patch", e.key()), phi, d);
     if (w.surface->isClosed()) {
       if (d.found("materialSide")) {

@@ -104,4 +104,25 @@ TEST(Gravity, AValueThatIsNotAVectorIsAFatalErrorAtItsLine) {
   }
 }
 
+// A slip of a digit warns at the entry (a scaled experiment may mean it: not an error); the log
+// says the slope g implies.
+TEST(Gravity, ImplausibleMagnitudeWarnsAndTheSlopeIsLogged) {
+  TempDir dir;
+  writeGravity(dir, "dimensions      [0 1 -2 0 0 0 0];\nvalue           (0 -98.1 0);\n");
+  const int before = warningCount();
+  testing::internal::CaptureStderr();
+  (void)readGravity(dir.path());
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(warningCount(), before + 1);
+  EXPECT_TRUE(contains(err, "|g| = 98.1 m/s^2")) << err;
+  EXPECT_TRUE(contains(err, "constant/g, line 10")) << err;
+
+  writeGravity(dir, "dimensions      [0 1 -2 0 0 0 0];\nvalue           (8.035854 -5.626776 0);\n");
+  testing::internal::CaptureStdout();
+  (void)readGravity(dir.path());
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_EQ(warningCount(), before + 1);
+  EXPECT_TRUE(contains(out, "--> Note: g = (8.036 -5.627 0) m/s^2, |g| = 9.81 m/s^2: 55.0 deg from -y")) << out;
+}
+
 }  // namespace

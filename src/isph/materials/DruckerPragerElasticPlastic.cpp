@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/Plausibility.hpp"
+
 namespace isph {
 
 namespace {
@@ -30,6 +32,7 @@ DruckerPragerElasticPlastic::DruckerPragerElasticPlastic(const std::string& name
     : MaterialModel(name, dict) {
   phi_ = dict.get<double>("phi");
   checked(dict, "phi", phi_ > 0 && phi_ < 90, name, "an angle in degrees between 0 and 90");
+  warnIfImplausibleFrictionAngle(phi_, fmt::format("material '{}': phi", name), dict.findEntry("phi")->location());
   cohesion_ = dict.getOrDefault("cohesion", 0.0);
   if (dict.found("cohesion")) checked(dict, "cohesion", cohesion_ >= 0, name, "a cohesion >= 0 (Pa)");
   E_ = dict.get<double>("E");

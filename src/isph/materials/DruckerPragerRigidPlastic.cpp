@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/Plausibility.hpp"
 #include "isph/materials/EquivalentFriction.hpp"
 
 namespace isph {
@@ -39,6 +40,7 @@ std::optional<double> positiveEntry(const Dictionary& dict, const std::string& k
 DruckerPragerRigidPlastic::DruckerPragerRigidPlastic(const std::string& name, const Dictionary& dict)
     : MaterialModel(name, dict) {
   phi_ = angleEntry(dict, "phi", name);
+  warnIfImplausibleFrictionAngle(phi_, fmt::format("material '{}': phi", name), dict.findEntry("phi")->location());
   phiEffective_ = phi_;
   frictionNote_ = "no pore pressure";
   if (dict.found("phiEquivalent") && dict.found("waterTable")) {

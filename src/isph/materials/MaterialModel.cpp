@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/Plausibility.hpp"
+
 namespace isph {
 
 MaterialModel::MaterialModel(std::string name, const Dictionary& dict)
@@ -10,6 +12,7 @@ MaterialModel::MaterialModel(std::string name, const Dictionary& dict)
     fatalIOError(dict.findEntry("rho")->location(),
                  fmt::format("material '{}': rho must be positive (kg/m^3), got {}", name_, rho_));
   }
+  warnIfImplausibleDensity(rho_, fmt::format("material '{}': rho", name_), dict.findEntry("rho")->location());
 }
 
 std::unique_ptr<MaterialModel> makeMaterialModel(const std::string& name, const Dictionary& dict) {
