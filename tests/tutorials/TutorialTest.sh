@@ -6,6 +6,7 @@
 # the same runs.
 #   . TutorialTest.sh
 #   runTutorial <project dir> <build dir> <tutorial path under tutorials/>   # sets case, results
+#   barrierClone <project dir> <build dir> <name>   sets scratch and case: a clone of the barrier
 #   checkTutorial                  the case's validation/checks for a -test run
 #   value <name>                   the value of a results.txt line "name value unit"; a missing,
 #                                  repeated or non-numeric entry (nan included) fails the test,
@@ -43,6 +44,18 @@ runTutorial() {
         exit 1
     fi
     cat "$results"
+}
+
+# barrierClone <project dir> <build dir> <name>: a user's shell (the build's bin on PATH, no
+# progress lines) and case=$scratch/<name>, a clone of the barrier tutorial (isphCloneCase)
+barrierClone() {
+    export ISPH_PROJECT_DIR=$1 ISPH_BUILD_DIR=$2 ISPH_PROGRESS=off
+    export PATH="$2/bin:$PATH"
+    . "$1/etc/RunFunctions"
+    . "$1/etc/ValidationFunctions"
+    scratch=$(mktemp -d "${TMPDIR:-/tmp}/isphBarrier.XXXXXX")
+    case=$scratch/$3
+    isphCloneCase "$1/tutorials/landslides/barrier" "$case" > /dev/null
 }
 
 checkTutorial() {
