@@ -10,6 +10,7 @@
 #include "core/Log.hpp"
 #include "core/ParallelRun.hpp"
 #include "core/app/Banner.hpp"
+#include "core/app/DefaultThreads.hpp"
 #include "core/app/OutOfMemory.hpp"
 #include "core/io/StagingRecovery.hpp"
 #include "core/time/Time.hpp"
@@ -52,6 +53,7 @@ int failed(const std::string& report) {
 int runApplication(const ApplicationSpec& spec, int argc, const char* const* argv,
                    const std::function<void(const ArgList&)>& body) {
   installOutOfMemoryHandler();
+  applyDefaultThreadCount();
   try {
     const ArgList args(spec, argc, argv);
     const bool banner = spec.banner && isMasterRank();  // a parallel run's log is rank 0's

@@ -46,7 +46,7 @@ std::string banner(const ArgList& args) {
   out += fmt::format("nProcs   : {}{}\n", nProcs, nProcs > 1 ? " (MPI ranks)" : "");
   out += fmt::format("nThreads : {}{}{}\n", threadCount(), nProcs > 1 ? " per rank" : "",
 #ifdef _OPENMP
-                     " (OpenMP, from OMP_NUM_THREADS or the core count)"
+                     " (OpenMP: OMP_NUM_THREADS, else 1: core/app/DefaultThreads.hpp)"
 #else
                      " (built without OpenMP)"
 #endif
