@@ -15,6 +15,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "core/io/StagingNames.hpp"
 #include "core/io/ReadFile.hpp"
+#include "parallel/DecompositionRecord.hpp"
 
 namespace isph {
 
@@ -256,7 +257,9 @@ DecomposedTime::DecomposedTime(const fs::path& caseDir, const std::string& timeN
   fs::remove_all(path_);
   fs::create_directories(path_);
   try {
-    reconstructTime(caseDir, nProcessorDirectories(caseDir), timeName, path_);
+    const DecompositionRecord decomposition = wholeDecomposition(caseDir);
+    checkWholeTime(decomposition, timeName,
+                   reconstructTime(caseDir, decomposition.numberOfSubdomains, timeName, path_));
   } catch (...) {  // (a time a processor lacks: the caller skips it; the folder must not stay)
     std::error_code ec;
     fs::remove_all(path_, ec);

@@ -42,7 +42,8 @@ std::size_t reconstructTime(const std::filesystem::path& caseDir, int nProcs, co
 std::vector<Instant> decomposedTimes(const std::filesystem::path& caseDir);
 
 // A time as a post-processing utility reads it: <case>/<time>, or, for a decomposed case
-// (-parallel), processor*/<time> merged into a hidden folder of the case that is removed
+// (-parallel), processor*/<time> of the whole decomposition (FatalError otherwise,
+// DecompositionRecord.hpp) merged into a hidden folder of the case that is removed
 // afterwards, also when the merge fails (a staging name: listTimes skips it, and the recovery
 // at the start of the next application clears it if this one was killed; StagingRecovery.hpp).
 class DecomposedTime {

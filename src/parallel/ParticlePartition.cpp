@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <numeric>
 
 #include "core/Error.hpp"
 
@@ -53,6 +55,18 @@ double partitionLoad(const ParticleCloud& cloud) {
   double load = 0;
   for (const label k : cloud.kind) load += partitionWeight(k);
   return load;
+}
+
+void warnIfOverDecomposed(const std::vector<long>& materialPerPart) {
+  const auto parts = static_cast<long>(materialPerPart.size());
+  const long material = std::accumulate(materialPerPart.begin(), materialPerPart.end(), 0L);
+  const auto empty = std::count(materialPerPart.begin(), materialPerPart.end(), 0L);
+  if (parts <= 1 || (empty == 0 && material >= minMaterialPerSubdomain * parts)) return;
+  warning(fmt::format("{} subdomains for {} material particles ({:.3g} per subdomain, {} with none): more than make "
+                      "sense; below {} material particles a subdomain's halo outweighs its own particles. "
+                      "numberOfSubdomains {} or fewer in system/decomposeParDict",
+                      parts, material, static_cast<double>(material) / static_cast<double>(parts), empty,
+                      minMaterialPerSubdomain, std::max(1L, material / minMaterialPerSubdomain)));
 }
 
 }  // namespace isph

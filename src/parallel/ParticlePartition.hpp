@@ -31,6 +31,15 @@ PartitionInput partitionInput(const ParticleCloud& cloud, const std::vector<int>
 // x moved by at most 1e-6 spacing, the same way for the same id (see above).
 Vec3 partitionPoint(const Vec3& x, label id, double spacing);
 
+// Below this many material particles per subdomain a rank's halo (the ghosts within two kernel
+// supports around it) outweighs the particles it owns: another rank adds communication, not speed.
+constexpr long minMaterialPerSubdomain = 100;
+
+// A warning (the run goes on) when a decomposition has more subdomains than its material particles
+// make sense of: a subdomain without material particles, or fewer than minMaterialPerSubdomain on
+// average; it says how many subdomains would. `materialPerPart`: material particles per subdomain.
+void warnIfOverDecomposed(const std::vector<long>& materialPerPart);
+
 // The load (sum of weights) of this rank's particles.
 double partitionLoad(const ParticleCloud& cloud);
 

@@ -8,12 +8,7 @@ src=$1
 bin=$2/bin
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-passed=0 fails=0
-check() {  # check <description> <command...>: the command must succeed
-  local what=$1; shift
-  if "$@"; then echo "PASS: $what"; passed=$((passed + 1)); else echo "FAIL: $what"; fails=$((fails + 1)); fi
-}
-has() { grep -q -- "$1" <<< "$2"; }  # has <text> <output>
+. "$src/tests/applications/CheckFunctions.sh"  # check, has
 deadPid() { sh -c 'echo $$'; }       # a process that has ended
 
 # ---- dictionaries ----------------------------------------------------------------------
@@ -165,8 +160,13 @@ for time in 0.1 0.2 0.3; do cp -r "$t/0" "$t/$time"; done
 rm "$t/0.1/lagrangian/particles/U"                                 # half-deleted
 awk 'NR == 25 { $0 = "nan" } { print }' "$t/0/lagrangian/particles/p" > "$t/0.2/lagrangian/particles/p"
 pLine=$(awk 'NR == 25' "$t/0.2/lagrangian/particles/p")
-"$bin/toVTK" -case "$t" > "$work/log.toVTK" 2>&1; rc=$?
-check "toVTK goes past an incomplete time and a nan: exit 0" test "$rc" -eq 0
+out=$("$bin/toVTK" -case "$t" 2>&1); rc=$?
+check "toVTK stops at an incomplete time: exit 1, a script can tell (issue 54)" test "$rc" -eq 1
+check "... naming the time, the missing file and the option to carry on" \
+    bash -c "grep -q 'time 0.1 cannot be read' <<< \"\$1\" && grep -q '0.1/lagrangian/particles/U' <<< \"\$1\" && grep -q -- '-skipDamaged' <<< \"\$1\"" _ "$out"
+check "... -help names that option" bash -c "'$bin/toVTK' -help | grep -q -- '-skipDamaged'"
+"$bin/toVTK" -case "$t" -skipDamaged > "$work/log.toVTK" 2>&1; rc=$?
+check "toVTK -skipDamaged goes past an incomplete time and a nan: exit 0" test "$rc" -eq 0
 check "... the .pvd lists the readable times" \
     bash -c "[ \"\$(grep -c 'DataSet' '$t/VTK/tank.pvd')\" -eq 2 ] && ! grep -q '_0.1.vtp\|_0.2.vtp' '$t/VTK/tank.pvd'"
 check "... warns naming the missing file" has "time 0.1 is skipped" "$(cat "$work/log.toVTK")"
@@ -174,7 +174,9 @@ check "... and the nan with its file and line" has "0.2/lagrangian/particles/p, 
 check "... not a finite number" has "'nan' is not a finite number" "$(cat "$work/log.toVTK")"
 check "... and counts the skipped" has "2 of 4 selected times were skipped" "$(cat "$work/log.toVTK")"
 "$bin/sampleForces" -case "$t" > "$work/log.sampleForces" 2>&1; rc=$?
-check "sampleForces skips them too (exit 0)" test "$rc" -eq 0
+check "sampleForces stops there too (exit 1)" test "$rc" -eq 1
+"$bin/sampleForces" -case "$t" -skipDamaged > "$work/log.sampleForces" 2>&1; rc=$?
+check "sampleForces -skipDamaged skips them (exit 0)" test "$rc" -eq 0
 check "... no nan in the forces" bash -c "! grep -qi nan '$t/postProcessing/sampleForces/0/leftWall.dat'"
 out=$("$bin/sampleForces" -case "$t" -time 0.2 2>&1); rc=$?
 check "sampleForces on the nan time alone: exit 1" test "$rc" -eq 1

@@ -13,6 +13,7 @@
 #include "core/fields/FieldIO.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "parallel/DecomposedCase.hpp"
+#include "parallel/DecompositionRecord.hpp"
 #include "parallel/Reduce.hpp"
 #include "particles/CloudIO.hpp"
 
@@ -55,6 +56,9 @@ TEST(DecomposedCase, DecomposeThenReconstructGivesBackEveryFieldExactly) {
   std::vector<int> part(c.cloud.size());
   for (std::size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>((i * 7) % nParts);
   decomposeTime(c.dir, "0.5", "particles", part, nParts);
+  for (int p = 0; p < nParts; ++p) {  // (as decomposePar records it)
+    writeDecompositionRecord(c.dir / processorName(p), nParts, static_cast<long>(c.cloud.size()));
+  }
   ASSERT_EQ(nProcessorDirectories(c.dir), nParts);
   for (int p = 0; p < nParts; ++p) {
     const fs::path time = c.dir / processorName(p) / "0.5";
@@ -104,6 +108,27 @@ TEST(DecomposedCase, DecomposeThenReconstructGivesBackEveryFieldExactly) {
   EXPECT_EQ(std::distance(fs::directory_iterator(c.dir), fs::directory_iterator()), 1 + nParts + 1)
       << "0.5, the processor folders and merged: the view's folder is gone";
   EXPECT_EQ(DecomposedTime(c.dir, "0.5", false).path(), c.dir / "0.5");
+}
+
+TEST(DecomposedCase, AViewOfLessThanTheWholeDecompositionIsRefused) {
+  if (thisRank() != 0) GTEST_SKIP() << "files only: rank 0 does it";
+  Case c;  // issue 54: processor1 of 3 gone, the utilities merged the other two and said nothing
+  const int nParts = 3;
+  std::vector<int> part(c.cloud.size());
+  for (std::size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i % nParts);
+  decomposeTime(c.dir, "0.5", "particles", part, nParts);
+  for (int p = 0; p < nParts; ++p) {
+    writeDecompositionRecord(c.dir / processorName(p), nParts, static_cast<long>(c.cloud.size()));
+  }
+  fs::remove_all(c.dir / processorName(2));
+  try {
+    const DecomposedTime view(c.dir, "0.5", true);
+    FAIL() << "two of three processor folders were merged";
+  } catch (const FatalError& e) {
+    EXPECT_NE(std::string(e.what()).find("processor2 is missing"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(wholeDecomposition(c.dir, true).numberOfSubdomains, 2) << "-force: what is there";
+  EXPECT_EQ(wholeDecomposition(c.dir, true).particles, 0) << "-force: no count held against the times";
 }
 
 // The solver's arrays by origId in uniform/ (StepState.hpp: wall friction states, slip

@@ -62,7 +62,7 @@ cp "$work/dict.orig" "$work/tank/system/sampleForcesDict"
 check "toVTK converts every time" bash -c "[ -s '$work/tank/VTK/tank_0.vtp' ] && [ -s '$work/tank/VTK/tank_0.5.vtp' ]"
 check "the .pvd lists them in order" bash -c "grep -o 'timestep=\"[^\"]*\"' '$work/tank/VTK/tank.pvd' | tr '\n' ' ' | grep -qx 'timestep=\"0\" timestep=\"0.5\" '"
 out=$("$bin/toVTK" -case "$work/tank" -time 7 2>&1); rc=$?
-check "a time that does not exist warns and writes nothing new" bash -c "[ $rc -eq 0 ] && grep -q 'no time directory selected' <<< \"\$1\"" _ "$out"
+check "a time that does not exist: nothing to do, exit 1 (a script can tell)" bash -c "[ $rc -eq 1 ] && grep -q 'no time directory selected.*nothing to do' <<< \"\$1\"" _ "$out"
 out=$("$bin/toVTK" -case "$work/tank" -cloud sand 2>&1); rc=$?
 check "a missing cloud is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q \"cloud 'sand' not found\" <<< \"\$1\"" _ "$out"
 

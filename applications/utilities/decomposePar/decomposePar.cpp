@@ -20,6 +20,7 @@
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "parallel/DecomposedCase.hpp"
 #include "parallel/DecompositionDict.hpp"
+#include "parallel/DecompositionRecord.hpp"
 #include "parallel/ParticlePartition.hpp"
 #include "parallel/ZoltanPartitioner.hpp"
 #include "particles/CloudIO.hpp"
@@ -84,6 +85,7 @@ void run(const isph::ArgList& args) {
   const auto times = isph::selectedTimes(args);
   const int nParts = settings.numberOfSubdomains;
   isph::info("Decomposing into {} subdomains with zoltan {}\n", nParts, settings.algorithm);
+  long particles = 0;  // (every time holds the same particles: the solver creates and deletes none)
   for (const auto& time : times) {
     const std::vector<std::string> clouds = isph::cloudNames(caseDir / time.name);
     if (clouds.size() != 1) {
@@ -95,6 +97,7 @@ void run(const isph::ArgList& args) {
     isph::ZoltanPartitioner zoltan(settings.algorithm, cloud.properties.dimension, nParts);
     const std::vector<int> part = zoltan.partition(in.points, in.weights, cloud.origId);
     isph::decomposeTime(caseDir, time.name, clouds[0], part, nParts);
+    particles = static_cast<long>(cloud.size());
 
     std::vector<double> load(static_cast<std::size_t>(nParts), 0.0);
     std::vector<long> material(static_cast<std::size_t>(nParts), 0), all(load.size(), 0);
@@ -110,6 +113,10 @@ void run(const isph::ArgList& args) {
                  material[static_cast<std::size_t>(p)]);
     }
     isph::info("    balance: largest load / mean load = {:.3f}", isph::imbalance(load));
+    isph::warnIfOverDecomposed(material);
+  }
+  for (int p = 0; p < nParts; ++p) {
+    isph::writeDecompositionRecord(caseDir / isph::processorName(p), nParts, particles);
   }
   isph::info("\nWrote {} processor directories", nParts);
 }

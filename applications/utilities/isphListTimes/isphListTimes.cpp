@@ -20,7 +20,7 @@ const isph::ApplicationSpec spec{
 };
 
 void run(const isph::ArgList& args) {
-  for (const auto& t : isph::selectedTimes(args)) {
+  for (const auto& t : isph::selectedTimes(args, isph::EmptySelection::warn)) {
     if (args.found("rm")) {
       if (t.value == 0 && !args.option("time")) continue;
       isph::removeDirectoryAtomically(args.casePath() / t.name);  // out of view first

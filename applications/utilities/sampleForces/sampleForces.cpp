@@ -25,7 +25,8 @@ const isph::ApplicationSpec spec{
     .name = "sampleForces",
     .description = "Forces of the material on the wall patches of each set in system/sampleForcesDict.",
     .options = {{"plot", "", "also draw <set>.png with gnuplot (force against time)"},
-                {"cloud", "name", "the cloud (default: `cloud` in the dictionary, else particles)"}},
+                {"cloud", "name", "the cloud (default: `cloud` in the dictionary, else particles)"},
+                isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
     .parallel = true,
@@ -48,12 +49,11 @@ void run(const isph::ArgList& args) {
   const std::string cloudName = args.option("cloud").value_or(dict.getOrDefault("cloud", "particles"));
   const auto sets = isph::readForceSets(dict, {"cloud"});
   const auto times = isph::selectedTimes(args);
-  if (times.empty()) return;
 
   std::vector<isph::ForceTable> tables;
   std::vector<std::string> text(sets.size());
   std::unique_ptr<isph::Kernel> kernel;
-  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
+  isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
     isph::info("Time = {}", time.name);
     // A material that slides on the walls (the solver wrote its wall friction) exchanges no τ

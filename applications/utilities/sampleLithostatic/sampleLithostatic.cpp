@@ -45,7 +45,7 @@ const isph::ApplicationSpec spec{
     .name = "sampleLithostatic",
     .description = "Error of a layer at rest against statics, from system/sampleLithostaticDict: the pressure against the "
                    "lithostatic one and, where tau is written, the traction on planes parallel to the bed (sigma_nn, sigma_nt).",
-    .options = {{"cloud", "name", "the cloud (default: particles)"}},
+    .options = {{"cloud", "name", "the cloud (default: particles)"}, isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
     .parallel = true,
@@ -83,7 +83,6 @@ void run(const isph::ArgList& args) {
     referenceName = picked.front().name;
   }
   const auto times = isph::selectedTimes(args);
-  if (times.empty()) return;
   const isph::ParticleCloud start =
       isph::readCloud(isph::DecomposedTime(args.casePath(), referenceName, decomposed).path(), cloudName);
 
@@ -93,7 +92,7 @@ void run(const isph::ArgList& args) {
                       s.xMin, s.xMax, s.minDepth, s.height, referenceName);
   text += "# Time[s] l2[-] spread[-] maxDisplacement[m] l2SigmaNn[-] l2SigmaNt[-] spreadSigmaNn[-] spreadSigmaNt[-] "
           "atYield[-]\n";
-  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
+  isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
     std::optional<std::vector<isph::SymmTensor>> tau;
     const auto cloud = skipped.read(time, [&] {

@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 const isph::ApplicationSpec spec{
     .name = "sampleRunOut",
     .description = "Run-out (front position) of the material along a direction, from system/sampleRunOutDict.",
-    .options = {{"cloud", "name", "the cloud (default: particles)"}},
+    .options = {{"cloud", "name", "the cloud (default: particles)"}, isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
     .parallel = true,
@@ -48,12 +48,11 @@ void run(const isph::ArgList& args) {
   dict.checkKeywords();
   const std::string cloudName = args.option("cloud").value_or("particles");
   const auto times = isph::selectedTimes(args);
-  if (times.empty()) return;
 
   std::string text = "# run-out along (" + fmt::format("{} {} {}", s.direction.x(), s.direction.y(), s.direction.z()) +
                      ") from (" + fmt::format("{} {} {}", s.origin.x(), s.origin.y(), s.origin.z()) + ")\n" +
                      "# Time[s] runOut[m]\n";
-  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
+  isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
     const auto cloud = skipped.read(time, [&] {
       return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, args.found("parallel")).path(), cloudName);

@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 const isph::ApplicationSpec spec{
     .name = "sampleSurface",
     .description = "Free-surface height profile of the material along the bed, from system/sampleSurfaceDict.",
-    .options = {{"cloud", "name", "the cloud (default: particles)"}},
+    .options = {{"cloud", "name", "the cloud (default: particles)"}, isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
     .parallel = true,
@@ -60,7 +60,7 @@ void run(const isph::ArgList& args) {
 
   const std::string cloudName = args.option("cloud").value_or("particles");
   const auto times = isph::selectedTimes(args);
-  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
+  isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
     const auto cloud = skipped.read(time, [&] {
       return isph::readCloud(isph::DecomposedTime(args.casePath(), time.name, args.found("parallel")).path(), cloudName);

@@ -29,7 +29,7 @@ const isph::ApplicationSpec spec{
     .options = {{"fields", "(U p)", "convert only these fields (positions always)"},
                 {"noWalls", "", "leave out wall and dummy particles"},
                 {"ascii", "", "write ascii instead of compressed binary"},
-                {"cloud", "name", "the cloud to convert (default particles)"}},
+                {"cloud", "name", "the cloud to convert (default particles)"}, isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
     .parallel = true,
@@ -49,11 +49,10 @@ void run(const isph::ArgList& args) {
   const auto format = args.found("ascii") ? isph::VtkFormat::ascii : isph::VtkFormat::binary;
   const fs::path vtkDir = args.casePath() / "VTK";
   const auto times = isph::selectedTimes(args);
-  if (times.empty()) return;
   fs::create_directories(vtkDir);
 
   std::vector<isph::PvdEntry> converted;
-  isph::SkippedTimes skipped;  // a time that cannot be read is skipped with a warning
+  isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
     const auto cloud = skipped.read(time, [&] {
       const isph::DecomposedTime timeDir(args.casePath(), time.name, args.found("parallel"));

@@ -4,7 +4,21 @@
 
 namespace isph {
 
+OptionSpec SkippedTimes::option() {
+  return {"skipDamaged", "",
+          "carry on past a selected time that cannot be read (incomplete or damaged) with a warning, instead of "
+          "stopping there with an error"};
+}
+
+SkippedTimes::SkippedTimes(const ArgList& args) : carryOn_(args.found(option().name)) {}
+
 void SkippedTimes::skip(const Instant& time, const FatalError& e) {
+  if (!carryOn_) {
+    throw FatalError(fmt::format("time {} cannot be read (incomplete or damaged), stopped there (the times before it "
+                                 "are done; -skipDamaged carries on past such a time):\n{}",
+                                 time.name, e.what()),
+                     e.where());
+  }
   ++count_;
   warning(fmt::format("time {} is skipped: it cannot be read (incomplete or damaged):{}", time.name,
                       e.report()));

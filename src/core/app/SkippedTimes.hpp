@@ -1,10 +1,13 @@
 #pragma once
-// Post-processing over the selected times goes on past a time directory it cannot read (one
-// half-written by a run that was killed, a field damaged or removed by hand): that time is
-// skipped with a warning that gives the reason, and the end of the run says how many were.
-// Only when none of the times can be read is it an error (and a non-zero exit).
+// Post-processing over the selected times stops at a time directory it cannot read (one
+// half-written by a run that was killed, a field damaged or removed by hand) with a FatalError
+// that names the time, the reason and the option -skipDamaged (a non-zero exit, as OpenFOAM's:
+// a script can tell; the times before it are done). With -skipDamaged such a time is skipped with
+// a warning that gives the reason, and the end of the run says how many were; when none of the
+// times can be read it is still an error.
 //
-//   SkippedTimes skipped;
+//   const isph::ApplicationSpec spec{..., .options = {..., isph::SkippedTimes::option()}, ...};
+//   SkippedTimes skipped(args);
 //   for (const auto& time : times) {
 //     const auto cloud = skipped.read(time, [&] { return readCloud(casePath / time.name, name); });
 //     if (!cloud) continue;
@@ -17,13 +20,21 @@
 #include <utility>
 
 #include "core/Error.hpp"
+#include "core/app/ArgList.hpp"
 #include "core/time/TimeName.hpp"
 
 namespace isph {
 
 class SkippedTimes {
  public:
-  // What read() returns, or nullopt after a warning that `time` is skipped and why.
+  // -skipDamaged, for the application's options (its -help names it). (A function: the specs
+  // are namespace-scope constants of other files, initialised in an order of their own.)
+  static OptionSpec option();
+
+  explicit SkippedTimes(const ArgList& args);
+
+  // What read() returns; with -skipDamaged nullopt after a warning that `time` is skipped and
+  // why, without it a FatalError saying so.
   template <class Read>
   std::optional<std::invoke_result_t<Read>> read(const Instant& time, Read&& read) {
     try {
@@ -41,6 +52,7 @@ class SkippedTimes {
  private:
   void skip(const Instant& time, const FatalError& e);
 
+  bool carryOn_ = false;
   std::size_t count_ = 0;
 };
 

@@ -14,13 +14,16 @@ TimeSelection timeSelection(const ArgList& args) {
   return sel;
 }
 
-std::vector<Instant> selectedTimes(const ArgList& args) {
+std::vector<Instant> selectedTimes(const ArgList& args, EmptySelection empty) {
   // -parallel: the times of the decomposed case (processor0's; parallel/DecomposedCase.hpp).
   const auto dir = args.found("parallel") ? args.casePath() / "processor0" : args.casePath();
   const auto all = listTimes(dir);
   auto times = selectTimes(all, timeSelection(args));
   if (times.empty()) {
-    warning(fmt::format("no time directory selected in {} ({} time directories found)", dir.string(), all.size()));
+    const std::string message =
+        fmt::format("no time directory selected in {} ({} time directories found)", dir.string(), all.size());
+    if (empty == EmptySelection::error) fatalError(message + ": nothing to do");
+    warning(message);
   }
   return times;
 }

@@ -10,6 +10,7 @@
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "parallel/DecomposedCase.hpp"
+#include "parallel/DecompositionRecord.hpp"
 #include "parallel/GlobalNumbering.hpp"
 #include "parallel/Migration.hpp"
 #include "parallel/ParticleFields.hpp"
@@ -94,7 +95,8 @@ DistributedParticles::DistributedParticles(const Time& time) : settings_(Decompo
   if (!allRanks(minOverRanks(time.value()) == maxOverRanks(time.value()))) {
     fatalError("the processor directories start at different times: their latest times differ");
   }
-  std::filesystem::create_directories(time.timePath().parent_path());  // processor<rank>, for the writes
+  processorDir_ = time.timePath().parent_path();
+  std::filesystem::create_directories(processorDir_);  // processor<rank>, for the writes
 }
 
 DistributedParticles::~DistributedParticles() = default;
@@ -127,6 +129,10 @@ void DistributedParticles::distribute(ParticleCloud& cloud, double wallRadius) {
   info("    material particles per rank: {}", fmt::join(materials, " "));
   info("    balance: largest load / mean load = {:.3f} (material 1, wall {}, dummy {})", lastImbalance_,
        wallWeight, dummyWeight);
+  warnIfOverDecomposed(materials);
+  // (what reconstructPar checks the processor folders against: each rank its own)
+  const long particles = std::accumulate(all.begin(), all.end(), 0L);
+  writeDecompositionRecord(processorDir_, nRanks(), particles);
 }
 
 double DistributedParticles::imbalanceOf(double load, std::vector<double>* loads) const {

@@ -17,6 +17,7 @@
 //                 ParticleSystem of own and ghost particles.
 // Between two redistributions a rank owns the same particles, so the linear systems keep their
 // numbering (and an AMG hierarchy its matrix shape), as in a serial run between reorderings.
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,6 +59,7 @@ class DistributedParticles {
   double imbalanceOf(double load, std::vector<double>* loads = nullptr) const;
 
   DecompositionSettings settings_;
+  std::filesystem::path processorDir_;  // processor<rank>: its decomposition record (DecompositionRecord.hpp)
   std::unique_ptr<ZoltanPartitioner> zoltan_;
   std::unique_ptr<Halo> halo_;
   std::vector<label> parentId_;  // per particle of ps.cloud: a dummy's wall particle's origId, else -1
