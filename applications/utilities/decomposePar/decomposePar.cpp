@@ -37,6 +37,7 @@ const isph::ApplicationSpec spec{
     .options = {{"force", "", "remove existing processor directories first"}},
     .arguments = {},
     .timeOptions = true,
+    .recovery = isph::CaseRecovery::allHosts,  // it writes time directories: it holds the case lock
 };
 
 // For each dummy particle the index of its wall particle (the nearest, ties by origId, as

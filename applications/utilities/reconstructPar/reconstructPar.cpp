@@ -36,6 +36,7 @@ const isph::ApplicationSpec spec{
                 isph::SkippedTimes::option()},
     .arguments = {},
     .timeOptions = true,
+    .recovery = isph::CaseRecovery::allHosts,  // it writes time directories: it holds the case lock
 };
 
 // The particles of the root time `timeDir` (0 when it has none): those of its one cloud's origId.

@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <iostream>
+#include <memory>
 #include <new>
 
 #include "core/Error.hpp"
@@ -12,6 +13,7 @@
 #include "core/app/Banner.hpp"
 #include "core/app/DefaultThreads.hpp"
 #include "core/app/OutOfMemory.hpp"
+#include "core/io/CaseLock.hpp"
 #include "core/io/StagingRecovery.hpp"
 #include "core/time/Time.hpp"
 
@@ -37,6 +39,24 @@ void recoverCase(const ApplicationSpec& spec, const ArgList& args) {
   out << (spec.banner ? "\n" : "") << std::flush;
 }
 
+// The case lock of an application that writes time directories (CaseLock.hpp), taken before the
+// recovery (which owns what other hosts left: only with the lock is no one else writing), by
+// rank 0 of a parallel run; every rank ends when it is refused.
+std::unique_ptr<CaseLock> lockCase(const ApplicationSpec& spec, const ArgList& args) {
+  if (spec.recovery != CaseRecovery::allHosts) return nullptr;
+  std::unique_ptr<CaseLock> lock;
+  std::string taken;
+  try {
+    if (isMasterRank()) lock = std::make_unique<CaseLock>(args.casePath(), args.commandLine(), taken);
+  } catch (const FatalError&) {
+    agreeOverRanks(1);
+    throw;
+  }
+  if (agreeOverRanks(0) != 0) fatalError("the case is in use by another application (rank 0 says which)");
+  if (!taken.empty()) (spec.banner ? std::cout : std::cerr) << taken << "\n\n" << std::flush;
+  return lock;
+}
+
 // The error on stderr (from the rank that met it, named in a parallel run), then the exit
 // status 1; in a parallel run every rank ends, or the others would wait for this one.
 int failed(const std::string& report) {
@@ -58,6 +78,7 @@ int runApplication(const ApplicationSpec& spec, int argc, const char* const* arg
     const ArgList args(spec, argc, argv);
     const bool banner = spec.banner && isMasterRank();  // a parallel run's log is rank 0's
     if (banner) std::cout << isph::banner(args) << '\n';
+    const std::unique_ptr<CaseLock> lock = lockCase(spec, args);
     recoverCase(spec, args);
     body(args);
     // "End" closes the log of a finished run only: runApplication (etc/RunFunctions) skips a

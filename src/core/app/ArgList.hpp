@@ -21,7 +21,8 @@ enum class CaseRecovery {
   none,      // the application reads no case (isphDictionary reads a file)
   thisHost,  // leftovers of processes of this host that are gone
   allHosts,  // also those of other hosts: the applications that write time directories (the
-             // solver, particleMesh), of which one runs on a case at a time
+             // solver, particleMesh, decomposePar, reconstructPar), of which one runs on a case at
+             // a time: they hold the case lock (CaseLock.hpp)
 };
 
 struct ApplicationSpec {
