@@ -103,6 +103,26 @@ SceneDomain startDomain(const Time& time, const std::string& cloudName, const Pa
   return domain;
 }
 
+namespace {
+
+// Where particle `id` of the cloud read from `cloudDir` is in its file `field`: the file and line
+// (ascii), and the words for the message ("line 12", "value 3 of 617", or "read by another rank":
+// the cloud was reordered material | wall | dummy on reading, and parallel runs read per rank).
+std::pair<SourceLocation, std::string> particleInFile(const std::filesystem::path& cloudDir, const std::string& field,
+                                                      label id) {
+  const auto file = cloudDir / field;
+  const auto ids = readField<label>(cloudDir / "origId");
+  const auto at = std::find(ids.begin(), ids.end(), id);
+  const std::size_t index = static_cast<std::size_t>(at - ids.begin());
+  const int line = at == ids.end() ? 0 : fieldValueLine<Vec3>(file, index);
+  const std::string where = at == ids.end() ? std::string("read by another rank")
+                            : line > 0      ? fmt::format("line {}", line)
+                                            : fmt::format("value {} of {}", index + 1, ids.size());
+  return {SourceLocation{std::make_shared<const std::string>(file.string()), line, 0}, where};
+}
+
+}  // namespace
+
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
                        const std::filesystem::path& cloudDir, const std::string& domainSource) {
   const auto& c = ps.cloud;
@@ -110,24 +130,41 @@ void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
     const Vec3& x = c.positions[a];
     if ((x.array() >= domain.min.array()).all() && (x.array() <= domain.max.array()).all())
       continue;
-    // Where it is in the file (the cloud was reordered material | wall | dummy on reading).
-    const auto file = cloudDir / "positions";
-    const auto ids = readField<label>(cloudDir / "origId");
-    const auto at = std::find(ids.begin(), ids.end(), c.origId[a]);
-    const std::size_t index = static_cast<std::size_t>(at - ids.begin());
-    // (parallel: a particle read by another rank, from another processor directory, is not in it)
-    const int line = at == ids.end() ? 0 : fieldValueLine<Vec3>(file, index);
-    const std::string where = at == ids.end() ? std::string("read by another rank")
-                              : line > 0      ? fmt::format("line {}", line)
-                                              : fmt::format("value {} of {}", index + 1, ids.size());
+    const auto [location, where] = particleInFile(cloudDir, "positions", c.origId[a]);
     fatalIOError(
-        SourceLocation{std::make_shared<const std::string>(file.string()), line, 0},
+        location,
         fmt::format(
             "material particle origId {} ({}) is at ({:.6g} {:.6g} {:.6g}), outside the scene's "
             "domain ({:.6g} {:.6g} {:.6g}) to ({:.6g} {:.6g} {:.6g}): {}, enlarged each way by its "
             "largest side and 10 dx.\n    A field edited by hand? Restart from an earlier time.",
             c.origId[a], where, x.x(), x.y(), x.z(), domain.min.x(), domain.min.y(), domain.min.z(),
             domain.max.x(), domain.max.y(), domain.max.z(), domainSource));
+  }
+}
+
+double speedBound(const SceneDomain& domain, const Vec3& g) {
+  const double gravity = g.norm();
+  if (gravity == 0) return 1e300;
+  const double height = std::abs((domain.max - domain.min).dot(g / gravity));
+  return speedBoundFactor * std::sqrt(2 * gravity * height);
+}
+
+void checkSpeeds(const ParticleSystem& ps, const SceneDomain& domain, const Vec3& g,
+                 const std::filesystem::path& cloudDir) {
+  const double bound = speedBound(domain, g);
+  const auto& c = ps.cloud;
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {  // (parallel: this rank's own)
+    const Vec3& u = c.U[a];
+    if (u.stableNorm() <= bound) continue;
+    const auto [location, where] = particleInFile(cloudDir, "U", c.origId[a]);
+    const double height = std::abs((domain.max - domain.min).dot(g.normalized()));
+    fatalIOError(location,
+                 fmt::format("field U of material particle origId {} ({}) is ({:.6g} {:.6g} {:.6g}), |U| = {:.4g} m/s: "
+                             "above {} times the free-fall speed over the domain's height, {} sqrt(2 |g| H) = {:.4g} "
+                             "m/s (H = {:.4g} m, the scene's domain along g).\n    A field edited by hand, or a run "
+                             "that blew up? Restart from an earlier time.",
+                             c.origId[a], where, u.x(), u.y(), u.z(), u.stableNorm(), speedBoundFactor,
+                             speedBoundFactor, bound, height));
   }
 }
 

@@ -9,6 +9,10 @@
 //  - a material particle outside the scene's domain: the bounding box of the case's first
 //    particles (those particleMesh made) enlarged each way by its largest side and 10 dx, the
 //    margin within which the solver keeps the particles during the run (checkStillInDomain).
+//  - a material particle faster than speedBoundFactor times the free-fall speed over the
+//    domain's height, sqrt(2 |g| H) (no landslide or dam break comes near it): a field edited by
+//    hand or written by a run that blew up (U = 1e200 stopped with "the time step must be
+//    positive, found 0", naming nothing).
 // Fields that are not finite numbers are refused by the field readers (FieldIO.hpp).
 #include <filesystem>
 #include <optional>
@@ -47,6 +51,14 @@ SceneDomain startDomain(const Time& time, const std::string& cloudName, const Pa
 // material particle outside `domain`, its origId and position, and the domain.
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
                        const std::filesystem::path& cloudDir, const std::string& domainSource);
+
+constexpr double speedBoundFactor = 10;
+// speedBoundFactor sqrt(2 |g| H), H the extent of `domain` along g (no bound without gravity).
+double speedBound(const SceneDomain& domain, const Vec3& g);
+// FatalError naming the U file of `cloudDir`, the line (ascii) or value, the particle's origId
+// and its velocity when a material particle (this rank's own) is faster than speedBound.
+void checkSpeeds(const ParticleSystem& ps, const SceneDomain& domain, const Vec3& g,
+                 const std::filesystem::path& cloudDir);
 
 // The check after every step: FatalError when a material particle (this rank's own) has a
 // non-finite position, velocity or pressure, or left `domain`, naming it, the time and that the

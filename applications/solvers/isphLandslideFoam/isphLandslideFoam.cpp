@@ -6,9 +6,11 @@
 // The function objects of controlDict's `functions` (e.g. patchForces) run after each step.
 // Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) writes the time at the end of the step
 // and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
-// stops as well. At start it refuses an endTime not after the start time, a writeInterval
-// shorter than the step and particles outside the scene (isph/StartupChecks.hpp), and a scene
-// edited since particleMesh made 0/ unless -force (isph/SceneUpToDate.hpp).
+// stops as well. With adjustTimeStep no a step above maxCo is a warning and one past Co 1 or a wall
+// crossing stops the run (isph/FixedStepCheck.hpp). At start it refuses an endTime not after the
+// start time, a writeInterval shorter than the step, particles outside the scene and speeds far
+// past free fall (isph/StartupChecks.hpp), and a scene edited since particleMesh made 0/ unless
+// -force (isph/SceneUpToDate.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 // With -parallel it runs on the ranks of mpirun -np N (doc/parallel.md: decomposePar first, or
@@ -28,6 +30,7 @@
 #include "core/dictionary/KeywordRecord.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
+#include "isph/FixedStepCheck.hpp"
 #include "isph/SceneUpToDate.hpp"
 #include "isph/StartupChecks.hpp"
 #include "isph/StepWithRetry.hpp"
@@ -81,6 +84,8 @@ void run(const isph::ArgList& args) {
   }
   isph::info("\nStarting time loop\n");
   isph::ProgressReporter progress(spec.name, time.value());
+  isph::FixedStepCheck fixedStep(time);  // adjustTimeStep no: above maxCo a warning, past Co 1 the stop
+  std::string lastWritten = time.timeName();
   const auto loopStart = std::chrono::steady_clock::now();
   const std::clock_t loopCpuStart = std::clock();
   while (time.run()) {
@@ -99,8 +104,10 @@ void run(const isph::ArgList& args) {
                report.wallCrossings,
                report.densityVariation >= 0 ? fmt::format("  max density variation {:.3g}%", 100 * report.densityVariation)
                                             : std::string());
+    fixedStep.check(time, report, lastWritten, progress);
     if (time.writeTime()) {
       solver.write(time);
+      lastWritten = time.timeName();
       isph::info("    wrote time {}", time.timeName());
     }
     // The state as written now: the deviatoric stress after the step, the neighbours found
@@ -120,6 +127,7 @@ void run(const isph::ArgList& args) {
   }
   progress.finish(time.value(), time.settings().endTime);
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
+  if (const std::string above = fixedStep.summary(); !above.empty()) isph::info("{}", above);
   isph::info("{}", solver.safeguardSummary());
   isph::info("Mean neighbours per particle (last step): {:.1f}", isph::meanNeighbours(solver.particles()));
   if (solver.distributed()) isph::info("{}", solver.distributed()->balanceSummary());

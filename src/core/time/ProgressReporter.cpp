@@ -108,6 +108,19 @@ void ProgressReporter::update(double time, double endTime) {
   lastStep_ = step(endTime);
 }
 
+void ProgressReporter::note(const std::string& line) {
+  if (!active()) return;
+  write((lineOpen_ ? "\n" : "") + line + "\n");
+  lineOpen_ = false;
+  written_ = false;  // (a terminal: the status line again at the next update)
+}
+
+void ProgressReporter::noteOnTerminal(const std::string& line) {
+  ProgressReporter reporter("", 0);
+  reporter.note(line);
+  reporter.fd_ = -1;  // (no closing line)
+}
+
 void ProgressReporter::finish(double time, double endTime) {
   if (!active()) return;
   progress_.advance(clock_(), time);

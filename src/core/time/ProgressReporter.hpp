@@ -45,6 +45,12 @@ class ProgressReporter {
 
   // Once per time step: the run is at `time`; writes a status line when one is due.
   void update(double time, double endTime);
+  // A line for the user between the status lines (a warning that the log has too), e.g.
+  // "--> Warning: ...": on a terminal the open status line is ended first.
+  void note(const std::string& line);
+  // The same before a reporter exists (a warning at start): to environmentFd(), if any.
+  static void noteOnTerminal(const std::string& line);
+
   // The last line ("done", or "stopped" before endTime) and, on a terminal, the newline.
   // Reporting ends here.
   void finish(double time, double endTime);

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/Log.hpp"
+#include "core/time/ProgressReporter.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "isph/Gravity.hpp"
 #include "isph/ParticleCollision.hpp"
@@ -36,6 +37,18 @@ std::string findCloud(const std::filesystem::path& timeDir) {
   return clouds[0];
 }
 
+// A time a run wrote (it has uniform/) without the solver state: removed, or written before the
+// state existed. The restart goes on from the particles, but not as the uninterrupted run would.
+void warnRestartWithoutState(const Time& time) {
+  const std::string message = fmt::format(
+      "time {} has no solver state ({}/uniform/isphState is missing): the run restarts from the particles alone "
+      "(the step counters, the previous step and the scene's scales start anew) and will not be bit-identical to "
+      "an uninterrupted run",
+      time.timeName(), time.timeName());
+  warning(message);
+  ProgressReporter::noteOnTerminal("--> Warning: " + message);
+}
+
 }  // namespace
 
 std::unique_ptr<ParticleSolver> ParticleSolver::New(const Time& time, bool parallel) {
@@ -60,6 +73,7 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   state_ = distributed_ ? readStepStateOverRanks(time.startPath(), time.decomposedStart(), ps_.cloud.origId)
                         : readStepState(time.startPath());
   if (state_) info("    solver state (step {}) read from {}/uniform/isphState", state_->stepsTaken, time.timeName());
+  if (!state_ && std::filesystem::exists(time.startPath() / "uniform")) warnRestartWithoutState(time);
 
   info("\nReading system/isphSchemes");
   schemesDict_ = Dictionary::readOptionalFile(schemesFile(time), "system/isphSchemes");
@@ -96,6 +110,7 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   // The domain the particles must stay in; a restart's particles are checked against it.
   domain_ = startDomain(time, cloudName, ps_,
                         state_ ? std::optional(SceneDomain{state_->domainMin, state_->domainMax}) : std::nullopt);
+  checkSpeeds(ps_, domain_, g_, startCloudDir_);  // a hand-edited or blown-up U, named
 }
 
 ParticleSolver::~ParticleSolver() = default;
