@@ -12,7 +12,9 @@ MomentumBalanceFunctionObject::MomentumBalanceFunctionObject(const std::string& 
                                                              const Time& time)
     : FunctionObject(name, dict),
       width_(dict.getOptional<double>("width")),
-      file_(time.path() / "postProcessing" / name / time.timeName() / "momentum.dat") {
+      file_(time.path() / "postProcessing" / name / time.timeName() / "momentum.dat"),
+      out_(file_, fmt::format("function object '{}'", name)) {
+  if (isMasterRank()) dropHalfRows(file_.parent_path().parent_path(), file_.filename().string());
   if (width_ && !(*width_ > 0)) {
     fatalIOError(dict.entry("width").location(),
                  fmt::format("keyword 'width' of function object '{}' is {}; expected a positive width in metres",
@@ -57,9 +59,7 @@ void MomentumBalanceFunctionObject::execute(const Time& time, const SolverState&
   if (!isMasterRank()) return;  // a parallel run's file is rank 0's
   const char* axes[] = {"x", "y", "z"};
   std::string text;
-  if (!out_.is_open()) {
-    std::filesystem::create_directories(file_.parent_path());
-    out_.open(file_, std::ios::out | std::ios::trunc);
+  if (!out_.started()) {
     const std::string mass = width_ ? "kg" : "kg/m";
     const std::string force = width_ ? "N" : "N/m";
     const std::string momentum = width_ ? "kg m/s" : "kg m/s/m";
@@ -79,9 +79,7 @@ void MomentumBalanceFunctionObject::execute(const Time& time, const SolverState&
     for (int d = 0; d < dim; ++d) text += fmt::format("\t{:.8g}", (*v)[d]);
   }
   text += "\n";
-  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out_.flush();
-  if (!out_) fatalError(fmt::format("function object '{}': cannot write {}", name(), file_.string()));
+  out_.write(text);
 }
 
 std::string MomentumBalanceFunctionObject::describe() const {

@@ -25,10 +25,10 @@
 // records P): Time M Px Py dPx/dt dPy/dt Wx Wy Fx Fy (3D adds the z components). Each row is
 // written with one write and flushed, as patchForces' (PatchForcesFunctionObject.hpp).
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "postProcessing/functionObjects/FunctionObject.hpp"
+#include "postProcessing/functionObjects/RowFile.hpp"
 
 namespace isph {
 
@@ -45,7 +45,7 @@ class MomentumBalanceFunctionObject final : public FunctionObject {
  private:
   std::optional<double> width_;
   std::filesystem::path file_;
-  std::ofstream out_;
+  RowFile out_;
   bool havePrevious_ = false;
   double previousTime_ = 0;
   Vec3 previousMomentum_ = Vec3::Zero();

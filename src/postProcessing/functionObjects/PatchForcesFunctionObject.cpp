@@ -13,7 +13,10 @@ PatchForcesFunctionObject::PatchForcesFunctionObject(const std::string& name, co
                                                      const Time& time)
     : FunctionObject(name, dict),
       set_{readForceSet(name, dict)},
-      file_(time.path() / "postProcessing" / name / time.timeName() / "force.dat") {}
+      file_(time.path() / "postProcessing" / name / time.timeName() / "force.dat"),
+      out_(file_, fmt::format("function object '{}'", name)) {
+  if (isMasterRank()) dropHalfRows(file_.parent_path().parent_path(), file_.filename().string());
+}
 
 void PatchForcesFunctionObject::execute(const Time& time, const SolverState& state) {
   const auto forces = setForces({.cloud = state.cloud,
@@ -27,14 +30,10 @@ void PatchForcesFunctionObject::execute(const Time& time, const SolverState& sta
   std::string text;
   if (!table_) {
     table_.emplace(set_[0], state.cloud.properties.dimension);
-    std::filesystem::create_directories(file_.parent_path());
-    out_.open(file_, std::ios::out | std::ios::trunc);
     text = table_->header(forces[0]);
   }
   text += table_->row(time.value(), forces[0]);
-  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out_.flush();
-  if (!out_) fatalError(fmt::format("function object '{}': cannot write {}", name(), file_.string()));
+  out_.write(text);
 }
 
 std::string PatchForcesFunctionObject::describe() const {

@@ -23,12 +23,12 @@
 // (AtomicFile.hpp) would copy the whole file every step. Each row is written with one
 // write and flushed, so a crash leaves every row written before it complete and readable.
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "postProcessing/forces/ForceSet.hpp"
 #include "postProcessing/forces/ForceTable.hpp"
 #include "postProcessing/functionObjects/FunctionObject.hpp"
+#include "postProcessing/functionObjects/RowFile.hpp"
 
 namespace isph {
 
@@ -46,7 +46,7 @@ class PatchForcesFunctionObject final : public FunctionObject {
   std::vector<ForceSet> set_;  // one set (setForces takes a list)
   std::filesystem::path file_;
   std::optional<ForceTable> table_;  // from the first execute (the dimension is the cloud's)
-  std::ofstream out_;
+  RowFile out_;
 };
 
 }  // namespace isph
