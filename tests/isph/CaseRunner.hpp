@@ -143,6 +143,18 @@ class CaseRunner {
   int appended_ = 0;
 };
 
+// The mean x of a cloud's material particles (its centre of mass where they have equal masses).
+inline double meanMaterialX(const ParticleCloud& cloud) {
+  double sum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.kind[i] != 0) continue;
+    sum += cloud.positions[i].x();
+    ++n;
+  }
+  return sum / n;
+}
+
 // The largest distance any material particle has moved between two clouds of a case.
 // (Of the particles whose start position satisfies `from`, if given.)
 inline double largestMaterialDisplacement(const ParticleCloud& start, const ParticleCloud& end,

@@ -34,6 +34,7 @@
 namespace {
 
 using isph::test::CaseRunner;
+using isph::test::meanMaterialX;
 using namespace isph;
 namespace fs = std::filesystem;
 
@@ -89,17 +90,6 @@ void checkBedForces(CaseRunner& c, double normal, double tangential, const char*
       EXPECT_NEAR((*it)[k], u[k], 1e-6 * std::abs(u[k]) + 1e-9) << "column " << k + 1 << " at time " << u[0];
     }
   }
-}
-
-double meanMaterialX(const ParticleCloud& cloud) {
-  double sum = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (cloud.kind[i] != 0) continue;
-    sum += cloud.positions[i].x();
-    ++n;
-  }
-  return sum / n;
 }
 
 TEST(SlidingBlock, CentreOfMassAcceleratesAsACoulombBlock) {
