@@ -20,7 +20,8 @@
 //       origin      (0 0 0);
 //       translate   (0 0 0);
 //   }
-//   regions                      // material; the first listed wins where they overlap
+//   regions                      // material; the first listed wins where they overlap; each on
+//                                // the walls' material side (MaterialInsideWalls.hpp)
 //   {
 //       <name>
 //       {

@@ -7,6 +7,9 @@
 //   particleMesh -csv      # also postProcessing/particleMesh/<cloud>.csv, for a first look
 //   particleMesh -spacing 0.0108   # the scene at another spacing (the file unchanged)
 //
+// Material particles outside the walls' material side (a region drawn across a wall) are
+// refused, naming the region (MaterialInsideWalls.hpp).
+//
 // A case with later times (a run of the old particles) keeps its 0/ unless -force: the
 // solver's 'startFrom latestTime' would go on with the old run.
 //
@@ -25,6 +28,7 @@
 #include "core/io/AtomicFile.hpp"
 #include "particleGeneration/CsvExport.hpp"
 #include "particleGeneration/GenerationReport.hpp"
+#include "particleGeneration/MaterialInsideWalls.hpp"
 #include "particleGeneration/ParticleEstimate.hpp"
 #include "particleGeneration/ParticleGenerator.hpp"
 #include "particleGeneration/SceneReader.hpp"
@@ -132,6 +136,7 @@ void run(const isph::ArgList& args) {
 
   const isph::GenerationResult result = isph::generateParticles(scene);
   isph::logGeneration(scene, result);
+  isph::checkMaterialInsideWalls(scene, result);  // nothing written with material behind a wall
 
   const std::filesystem::path zero = caseDir / "0";
   if (std::filesystem::exists(zero)) isph::info("\nReplacing {}", zero.string());
