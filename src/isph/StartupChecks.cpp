@@ -9,6 +9,7 @@
 #include "core/fields/FieldIO.hpp"
 #include "core/time/TimeName.hpp"
 #include "parallel/Reduce.hpp"
+#include "particles/MaterialSideOfWalls.hpp"
 
 namespace isph {
 
@@ -140,6 +141,56 @@ void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
             c.origId[a], where, x.x(), x.y(), x.z(), domain.min.x(), domain.min.y(), domain.min.z(),
             domain.max.x(), domain.max.y(), domain.max.z(), domainSource));
   }
+}
+
+void checkMaterialSideOfWalls(const ParticleSystem& ps, const std::filesystem::path& cloudDir) {
+  const auto& c = ps.cloud;
+  std::vector<double> own;  // this rank's wall particles: position, normal, patch
+  own.reserve(7 * ps.ownWall());
+  for (std::size_t w = ps.wallBegin(); w < ps.wallBegin() + ps.ownWall(); ++w) {
+    own.insert(own.end(), {c.positions[w].x(), c.positions[w].y(), c.positions[w].z(), c.normal[w].x(),
+                           c.normal[w].y(), c.normal[w].z(), static_cast<double>(c.patch[w])});
+  }
+  const std::vector<double> all = gatherOverRanks(own);  // parallel: every rank's walls
+  std::vector<MaterialSideOfWalls::WallPoint> walls;
+  walls.reserve(all.size() / 7);
+  for (std::size_t i = 0; i + 7 <= all.size(); i += 7) {
+    walls.push_back({Vec3(all[i], all[i + 1], all[i + 2]), Vec3(all[i + 3], all[i + 4], all[i + 5]),
+                     static_cast<label>(all[i + 6])});
+  }
+  if (walls.empty()) return;
+  const MaterialSideOfWalls sides(std::move(walls), ps.dx);
+  long behind = 0;
+  std::size_t first = 0;
+  MaterialSideOfWalls::Verdict example;
+  for (std::size_t a = 0; a < ps.ownMaterial(); ++a) {  // (parallel: this rank's own)
+    const auto v = sides.classify(c.positions[a]);
+    if (v.side != MaterialSideOfWalls::Side::behindWall) continue;
+    if (behind++ == 0) first = a, example = v;
+  }
+  const std::vector<long> perRank = gatherOverRanks(behind);  // parallel: the lowest rank with one says it
+  long total = 0;
+  int reporter = -1;
+  for (std::size_t r = 0; r < perRank.size(); ++r) {
+    total += perRank[r];
+    if (perRank[r] > 0 && reporter < 0) reporter = static_cast<int>(r);
+  }
+  if (total == 0 || thisRank() != reporter) return;  // (the others end with the reporter's error)
+  const Vec3& x = c.positions[first];
+  const auto& wall = sides.walls()[static_cast<std::size_t>(example.wall)];
+  const auto patch = static_cast<std::size_t>(wall.patch);
+  const std::string patchName =
+      patch < c.properties.patches.size() ? c.properties.patches[patch].name : fmt::format("{}", wall.patch);
+  const auto [location, where] = particleInFile(cloudDir, "positions", c.origId[first]);
+  fatalIOError(location,
+               fmt::format("material particle origId {} ({}) is at ({:.6g} {:.6g} {:.6g}), {:.4g} m behind wall patch "
+                           "'{}' (its wall particle at ({:.6g} {:.6g} {:.6g})): outside the walls{}.\n    A field "
+                           "edited by hand, or particles from a particleMesh that did not check the walls' side? Run "
+                           "particleMesh again, or restart from an earlier time.",
+                           c.origId[first], where, x.x(), x.y(), x.z(), -example.depth, patchName, wall.position.x(),
+                           wall.position.y(), wall.position.z(),
+                           total > 1 ? fmt::format(" ({} material particles are behind a wall in all)", total)
+                                     : std::string()));
 }
 
 double speedBound(const SceneDomain& domain, const Vec3& g) {

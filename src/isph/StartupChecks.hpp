@@ -9,6 +9,10 @@
 //  - a material particle outside the scene's domain: the bounding box of the case's first
 //    particles (those particleMesh made) enlarged each way by its largest side and 10 dx, the
 //    margin within which the solver keeps the particles during the run (checkStillInDomain).
+//  - a material particle behind a wall (on its solid side: MaterialSideOfWalls.hpp), a field
+//    edited by hand or particles that particleMesh made before it refused them (issue 54,
+//    item 5: the run went on with them, and the wall safeguard put one back still outside). A
+//    particle past the open end of a wall is left to the domain check: it may have flowed off it;
 //  - a material particle faster than speedBoundFactor times the free-fall speed over the
 //    domain's height, sqrt(2 |g| H) (no landslide or dam break comes near it): a field edited by
 //    hand or written by a run that blew up (U = 1e200 stopped with "the time step must be
@@ -51,6 +55,12 @@ SceneDomain startDomain(const Time& time, const std::string& cloudName, const Pa
 // material particle outside `domain`, its origId and position, and the domain.
 void checkInsideDomain(const ParticleSystem& ps, const SceneDomain& domain,
                        const std::filesystem::path& cloudDir, const std::string& domainSource);
+
+// FatalError naming the positions file of `cloudDir`, the line (ascii) or value of the first
+// material particle (this rank's own) behind a wall, its origId, position, depth and the wall
+// particle's patch, and how many there are over all ranks. The wall particles of every rank are
+// gathered (collective in a parallel run).
+void checkMaterialSideOfWalls(const ParticleSystem& ps, const std::filesystem::path& cloudDir);
 
 constexpr double speedBoundFactor = 10;
 // speedBoundFactor sqrt(2 |g| H), H the extent of `domain` along g (no bound without gravity).

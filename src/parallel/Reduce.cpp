@@ -84,6 +84,22 @@ bool allRanks(bool value) { return reduce(static_cast<int>(value), MPI_INT, MPI_
 std::vector<double> gatherOverRanks(double value) { return gather(value, MPI_DOUBLE); }
 std::vector<long> gatherOverRanks(long value) { return gather(value, MPI_LONG); }
 
+std::vector<double> gatherOverRanks(std::span<const double> values) {
+  if (!distributedRun()) return {values.begin(), values.end()};
+  const std::vector<long> sizes = gatherOverRanks(static_cast<long>(values.size()));
+  std::vector<int> counts(sizes.size()), offsets(sizes.size());
+  int total = 0;
+  for (std::size_t r = 0; r < sizes.size(); ++r) {
+    counts[r] = static_cast<int>(sizes[r]);
+    offsets[r] = total;
+    total += counts[r];
+  }
+  std::vector<double> out(static_cast<std::size_t>(total));
+  MPI_Allgatherv(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, out.data(), counts.data(),
+                 offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  return out;
+}
+
 long sumOverLowerRanks(long value) {
   if (!distributedRun()) return 0;
   long out = 0;

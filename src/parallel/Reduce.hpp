@@ -35,6 +35,8 @@ bool allRanks(bool value);
 // Every rank's value, by rank.
 std::vector<double> gatherOverRanks(double value);
 std::vector<long> gatherOverRanks(long value);
+// Every rank's values, one after the other by rank (the ranks may give different counts).
+std::vector<double> gatherOverRanks(std::span<const double> values);
 
 // The sum of `value` over the ranks below this one (MPI_Exscan; 0 on rank 0).
 long sumOverLowerRanks(long value);

@@ -10,6 +10,10 @@
 //  - checkStillInDomain: a non-finite position, velocity or pressure, or a particle out of the
 //    domain, is a FatalError naming the time, the particle's origId and that the last written
 //    time directory is intact;
+//  - checkMaterialSideOfWalls: with a bed of wall particles along y = 0, the scene passes; origId 5
+//    moved 0.03 m below the bed is a FatalError at its line of the positions file, naming its
+//    origId, position, depth and the wall's patch; a particle past the bed's open end is left to
+//    the domain check;
 //  - checkEndTime: endTime not after the start time (a fresh case, or one resumed at its endTime)
 //    is a FatalError at controlDict's endTime line;
 //  - checkWriteInterval: a writeInterval shorter than the first step with writeControl runTime or
@@ -141,6 +145,52 @@ TEST(StartupChecks, AMaterialParticleOutsideTheDomainIsAFatalErrorAtItsLineOfThe
   EXPECT_TRUE(contains(m, "at (0.35 0.02 0)")) << m;
   EXPECT_TRUE(contains(m, "(-0.2 -0.2 -0.2) to (0.3 0.25 0.2)")) << m;
   EXPECT_TRUE(contains(m, "the bounding box of the first particles")) << m;
+}
+
+// The scene with a bed: wall particles (origIds 100...) every dx along y = 0 from x = -0.05 to
+// 0.15, patch 'bed'.
+ParticleSystem sceneOnABed() {
+  ParticleSystem ps = scene();
+  ps.cloud.properties.patches = {{"bed", 0.0}};
+  for (int i = -5; i <= 15; ++i) {
+    if (i == 5) continue;  // (0.05 0 0) is the scene's wall particle
+    ps.cloud.push_back(Vec3(i * dx, 0, 0), 100 + i, Vec3::Zero(), 0, -1, ParticleKind::wall, 0, Vec3(0, 1, 0), 0);
+  }
+  ps.nWall = ps.cloud.size() - ps.nMaterial;
+  return ps;
+}
+
+TEST(StartupChecks, MaterialOnTheWallsMaterialSidePasses) {
+  TempDir dir;
+  writeCloud(dir / "0/lagrangian/particles");
+  const ParticleSystem ps = sceneOnABed();
+  EXPECT_NO_THROW(checkMaterialSideOfWalls(ps, dir / "0/lagrangian/particles"));
+  EXPECT_NO_THROW(checkMaterialSideOfWalls(scene(), dir / "0/lagrangian/particles"));  // one wall particle
+}
+
+TEST(StartupChecks, AMaterialParticleBehindAWallIsAFatalErrorAtItsLineOfThePositionsFile) {
+  TempDir dir;
+  const auto cloudDir = dir / "0.5/lagrangian/particles";
+  writeCloud(cloudDir);
+  ParticleSystem ps = sceneOnABed();
+  ps.cloud.positions[2] = Vec3(0.02, -0.03, 0);
+  int line = -1;
+  std::string file;
+  const std::string m = fatalMessage([&] { checkMaterialSideOfWalls(ps, cloudDir); }, &line, &file);
+  EXPECT_EQ(file, (cloudDir / "positions").string()) << m;
+  EXPECT_EQ(line, 13) << m;
+  EXPECT_TRUE(contains(m, "origId 5 (line 13) is at (0.02 -0.03 0), 0.03 m behind wall patch 'bed'")) << m;
+  ps.cloud.positions[3] = Vec3(0.05, -0.01, 0);  // a second one: counted
+  EXPECT_TRUE(contains(fatalMessage([&] { checkMaterialSideOfWalls(ps, cloudDir); }),
+                       "(2 material particles are behind a wall in all)"));
+}
+
+TEST(StartupChecks, AMaterialParticlePastAWallsOpenEndIsLeftToTheDomainCheck) {
+  TempDir dir;
+  writeCloud(dir / "0/lagrangian/particles");
+  ParticleSystem ps = sceneOnABed();
+  ps.cloud.positions[2] = Vec3(0.3, -0.2, 0);  // fell off the bed's end at x = 0.15
+  EXPECT_NO_THROW(checkMaterialSideOfWalls(ps, dir / "0/lagrangian/particles"));
 }
 
 // A Time on a temporary case, one step (0.001 s) in.

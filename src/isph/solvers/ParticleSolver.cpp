@@ -110,6 +110,7 @@ ParticleSolver::ParticleSolver(const Time& time, bool parallel) {
   // The domain the particles must stay in; a restart's particles are checked against it.
   domain_ = startDomain(time, cloudName, ps_,
                         state_ ? std::optional(SceneDomain{state_->domainMin, state_->domainMax}) : std::nullopt);
+  checkMaterialSideOfWalls(ps_, startCloudDir_);   // material behind a wall, named
   checkSpeeds(ps_, domain_, g_, startCloudDir_);  // a hand-edited or blown-up U, named
 }
 
