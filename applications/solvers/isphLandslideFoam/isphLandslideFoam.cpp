@@ -8,8 +8,8 @@
 // and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
 // stops as well. With adjustTimeStep no a step above maxCo is a warning and one past Co 1 or a wall
 // crossing stops the run (isph/FixedStepCheck.hpp). At start it refuses an endTime not after the
-// start time, a writeInterval shorter than the step, particles outside the scene and speeds far
-// past free fall (isph/StartupChecks.hpp), and a scene edited since particleMesh made 0/ unless
+// start time, a writeInterval shorter than the step, particles outside the scene or behind a wall
+// and speeds far past free fall (isph/StartupChecks.hpp), and a scene edited since particleMesh made 0/ unless
 // -force (isph/SceneUpToDate.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
