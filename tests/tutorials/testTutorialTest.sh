@@ -61,4 +61,18 @@ expectFailure "value whose result is only printed: a nan" bad 'echo "crossings: 
 expectFailure "check on a bare nan (awk reads it as 0)" good 'check "nan == 0" "nan == 0"' nan
 expectSuccess "checkTutorial on a complete results.txt" good checkTutorial
 expectFailure "checkTutorial: a nan and a missing entry" bad checkTutorial crossings left
+
+# safeguardRows (the validation report's safeguards table): one row per run of a case, the
+# prefix of a case of several runs, "?" for a figure missing, the goal 1 in 10,000.
+printf 'wallCrossings 0 -\nwallSafeguardPer10k 2.5 -\ncollisionsPer10k 0.031 -\n' > "$work/one.txt"
+printf 'a_wallSafeguardPer10k 0.1 -\na_collisionsPer10k 3 -\nb_wallSafeguardPer10k 7 -\n' > "$work/two.txt"
+printf 'peakForce 3 N\n' > "$work/none.txt"
+(
+    . "$project/etc/ValidationFunctions"
+    [ "$(safeguardRows "$work/one.txt")" = "-|2.5|0.031|1" ] || { echo "one: $(safeguardRows "$work/one.txt")"; exit 1; }
+    [ "$(safeguardRows "$work/two.txt" | tr '\n' ' ')" = "a|0.1|3|1 b|7|?|1 " ] ||
+        { echo "two: $(safeguardRows "$work/two.txt")"; exit 1; }
+    [ -z "$(safeguardRows "$work/none.txt")" ] || exit 1
+    ! safeguardRows "$work/missing.txt" 2> /dev/null
+) && pass "safeguardRows: per run, prefix, missing figure, goal" || failed "safeguardRows"
 [ "$nFail" -eq 0 ]
