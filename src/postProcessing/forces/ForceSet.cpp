@@ -4,6 +4,8 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include "core/dictionary/Dictionary.hpp"
 
@@ -42,6 +44,14 @@ ForceSet readForceSet(const std::string& name, const Dictionary& dict) {
                                name));
     }
     set.referenceColumns = {(*cols)[0], (*cols)[1]};
+  }
+  for (auto [key, value] : {std::pair{"filterWindow", &set.filterWindow}, {"lateForceWindow", &set.lateForceWindow}}) {
+    *value = dict.getOrDefault<double>(key, *value);
+    if (!(*value > 0) || !std::isfinite(*value)) {
+      fatalIOError(dict.entry(key).location(),
+                   fmt::format("keyword '{}' of set '{}' is {}; expected a positive duration in seconds", key, name,
+                               *value));
+    }
   }
   dict.checkKeywords();
   return set;

@@ -12,6 +12,11 @@
 //                                  // 60° of this direction (one face of a structure)
 //       reference   "validation/barrierForce.csv";   // optional, relative to the case
 //       referenceColumns (1 2);    // optional: the CSV's time and force columns (1-based)
+//       filterWindow 0.01;         // optional [s]: the centred moving average of the filtered
+//                                  // trace written beside the raw one (default 0.01 s, a load
+//                                  // cell's rate; FilteredForces.hpp)
+//       lateForceWindow 0.25;      // optional [s]: the late (deposit) force is the filtered
+//                                  // trace's mean over the last this many seconds (default 0.25)
 //   }
 #include <array>
 #include <filesystem>
@@ -35,6 +40,8 @@ struct ForceSet {
   std::optional<Vec3> facing;              // only the faces whose normal is within 60° of it
   std::optional<std::string> reference;    // CSV file, relative to the case
   std::array<int, 2> referenceColumns{1, 2};
+  double filterWindow = 0.01;              // [s] the filtered trace's moving-average window
+  double lateForceWindow = 0.25;           // [s] the late force: the filtered mean over the last this long
   SourceLocation where;                    // the set's dictionary
   SourceLocation patchesWhere;             // its `patches` entry
 
