@@ -126,6 +126,7 @@ void run(const isph::ArgList& args) {
     progress.update(time.value(), time.settings().endTime);
   }
   progress.finish(time.value(), time.settings().endTime);
+  functions.end(time);  // what is written from a whole history (patchForces: the filtered trace)
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
   if (const std::string above = fixedStep.summary(); !above.empty()) isph::info("{}", above);
   isph::info("{}", solver.safeguardSummary());

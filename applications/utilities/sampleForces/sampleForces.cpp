@@ -1,10 +1,18 @@
 // sampleForces: the force the material exerts on wall patches, for the selected times, set by
 // set as system/sampleForcesDict names them; writes postProcessing/sampleForces/<firstTime>/
 // <set>.dat (and <set>.png with -plot). The same routine as the solver's forces function object.
+// Beside each <set>.dat, <set>Filtered.dat and <set>Figures.txt: the history filtered by the set's
+// centred moving average (filterWindow) and its filtered peak, late force and raw maximum
+// (FilteredForces.hpp). On written times a 10 ms window is narrower than their spacing: then the
+// filtered history is the raw one, and the log says so (the function object filters every step).
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/app/Application.hpp"
 #include "core/app/SkippedTimes.hpp"
@@ -13,6 +21,7 @@
 #include "core/dictionary/Dictionary.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "particles/CloudIO.hpp"
+#include "postProcessing/forces/FilteredForces.hpp"
 #include "postProcessing/forces/ForcePlot.hpp"
 #include "postProcessing/forces/SetForces.hpp"
 #include "postProcessing/forces/WallStress.hpp"
@@ -52,6 +61,7 @@ void run(const isph::ArgList& args) {
 
   std::vector<isph::ForceTable> tables;
   std::vector<std::string> text(sets.size());
+  std::vector<std::string> headers(sets.size());
   std::unique_ptr<isph::Kernel> kernel;
   isph::SkippedTimes skipped(args);  // a time that cannot be read: an error, or skipped (-skipDamaged)
   for (const auto& time : times) {
@@ -78,7 +88,8 @@ void run(const isph::ArgList& args) {
     for (std::size_t s = 0; s < sets.size(); ++s) {
       if (tables.size() == s) {
         tables.emplace_back(sets[s], cloud.properties.dimension);
-        text[s] = tables[s].header(forces[s]);
+        headers[s] = tables[s].header(forces[s]);
+        text[s] = headers[s];
       }
       text[s] += tables[s].row(time.value, forces[s]);
       const auto& f = forces[s];
@@ -95,6 +106,24 @@ void run(const isph::ArgList& args) {
   for (std::size_t s = 0; s < sets.size(); ++s) {
     isph::writeFileAtomic(outDir / (sets[s].name + ".dat"), text[s]);
     isph::info("\nWritten {}", (outDir / (sets[s].name + ".dat")).string());
+    const isph::ForceRows rows = isph::readForceRows(text[s]);
+    if (rows.empty()) continue;
+    double spacing = 0;  // the widest gap between samples
+    for (std::size_t k = 1; k < rows.size(); ++k) spacing = std::max(spacing, rows[k][0] - rows[k - 1][0]);
+    const fs::path filtered = outDir / (sets[s].name + "Filtered.dat");
+    const fs::path figures = outDir / (sets[s].name + "Figures.txt");
+    const isph::ForceFigures f = isph::writeFilteredForces(sets[s], tables[s], headers[s], rows, filtered, figures);
+    const std::string unit = tables[s].columns()[1].unit;
+    isph::info("Written {} and {}: filtered ({:g} s) peak Fn {:.6g} {} at {:.6g} s, late force {:.6g} {} (last {:g} s), "
+               "raw maximum {:.6g} {}",
+               filtered.string(), figures.string(), sets[s].filterWindow, f.filteredPeak, unit, f.filteredPeakTime,
+               f.lateForce, unit, sets[s].lateForceWindow, f.rawMax, unit);
+    if (spacing > sets[s].filterWindow) {
+      isph::warning(fmt::format("set '{}': the filter window {:g} s (filterWindow) is narrower than the spacing of "
+                                "the times sampled, up to {:g} s: the filtered history is nearly the raw one (the "
+                                "solver's patchForces function object, every step, filters it)",
+                                sets[s].name, sets[s].filterWindow, spacing));
+    }
   }
   if (!args.found("plot")) return;
   for (std::size_t s = 0; s < sets.size(); ++s) {  // after every .dat is written: gnuplot may be missing

@@ -59,6 +59,9 @@ class FunctionObject {
   virtual void execute(const Time& time, const SolverState& state) = 0;
   // One line for the log at start: what it does and where it writes.
   virtual std::string describe() const = 0;
+  // At the end of the run (endTime or a stop by signal), after the last step: what is written
+  // from the whole history (patchForces: its filtered trace). Default: nothing.
+  virtual void end(const Time& /*time*/) {}
 
  private:
   std::string name_;

@@ -38,4 +38,8 @@ void FunctionObjectList::execute(const Time& time, const SolverState& state) {
   }
 }
 
+void FunctionObjectList::end(const Time& time) {
+  for (auto& f : objects_) f->end(time);
+}
+
 }  // namespace isph

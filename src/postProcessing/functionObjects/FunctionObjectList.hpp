@@ -23,6 +23,8 @@ class FunctionObjectList {
   // Whether some function object is due at this step (the solver then computes what they read).
   bool anyDue(const Time& time) const;
   void execute(const Time& time, const SolverState& state);
+  // Every function object's end(), once after the time loop.
+  void end(const Time& time);
 
  private:
   std::vector<std::unique_ptr<FunctionObject>> objects_;

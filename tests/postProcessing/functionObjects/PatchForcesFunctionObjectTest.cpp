@@ -91,6 +91,44 @@ TEST_F(FunctionObjects, FacingKeepsTheFacesThatLookThatWay) {
   EXPECT_NE(header.find("patches (bed) (the faces facing (0 1 0))"), std::string::npos) << header;
 }
 
+// Beside force.dat, the filtered history (forceFiltered.dat: the same rows, each force column
+// filtered over filterWindow) and its figures (forceFigures.txt), written at the end of the run;
+// a misspelt filter keyword is an error.
+TEST_F(FunctionObjects, PatchForcesWritesTheFilteredHistoryAndItsFigures) {
+  Time time(dir.path());
+  FunctionObjectList functions(
+      functionsDict("bed { type patchForces; patches (bed); filterWindow 0.25; lateForceWindow 0.2; }"), time);
+  ParticleCloud cloud = pptest::flatBed(10, 0.1, 1000.0);
+  for (int step = 0; step < 5; ++step) {
+    for (std::size_t i = 0; i < cloud.size(); ++i) cloud.p[i] = step == 2 ? 3000.0 : 1000.0;  // a spike at 0.3 s
+    ++time;
+    functions.execute(time, {.cloud = cloud});
+  }
+  functions.end(time);
+  const auto raw = rows(dir / "postProcessing/bed/0/force.dat");
+  const auto filtered = rows(dir / "postProcessing/bed/0/forceFiltered.dat");
+  const int Fn = 3, nWall = 21;
+  ASSERT_EQ(filtered.size(), raw.size());
+  ASSERT_EQ(filtered.size(), 5u);
+  EXPECT_NEAR(raw[2][Fn], 3000, 1e-9);
+  // At 0.3 s the window [0.175, 0.425] holds the whole spike, a triangle of 2000 N/m over
+  // [0.2, 0.4] (area 200 N s/m): 1000 + 200 / 0.25.
+  EXPECT_NEAR(filtered[2][Fn], 1800, 1e-6);
+  EXPECT_EQ(filtered[2][nWall], 10);
+  const std::string figures = pptest::readText(dir / "postProcessing/bed/0/forceFigures.txt");
+  EXPECT_NE(figures.find("\nfilteredPeak 1800 N/m\n"), std::string::npos) << figures;
+  EXPECT_NE(figures.find("\nfilteredPeakTime 0.3 s\n"), std::string::npos) << figures;
+  EXPECT_NE(figures.find("\nrawMax 3000 N/m\n"), std::string::npos) << figures;
+  EXPECT_NE(figures.find("\nfilterWindow 0.25 s\n"), std::string::npos) << figures;
+  EXPECT_NE(figures.find("\nlateForceWindow 0.2 s\n"), std::string::npos) << figures;
+
+  EXPECT_THROW(FunctionObjectList(functionsDict("f { type patchForces; patches (bed); filterWindw 0.02; }"), time),
+               FatalError)
+      << "a misspelt keyword";
+  EXPECT_THROW(FunctionObjectList(functionsDict("f { type patchForces; patches (bed); filterWindow 0; }"), time),
+               FatalError);
+}
+
 TEST_F(FunctionObjects, NoFunctionsIsAnEmptyList) {
   Time time(dir.path());
   EXPECT_EQ(FunctionObjectList(time).size(), 0u);
