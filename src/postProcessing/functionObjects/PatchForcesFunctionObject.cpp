@@ -20,7 +20,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // The rows of the earlier runs of a continued case: postProcessing/<name>/<t0>/force.dat for
-// every start time t0 before `start`, in time order, each up to the next start time.
+// every start time t0 before `start`, in time order, each up to and with the next start time
+// (a run writes no row at its own start).
 std::vector<std::vector<double>> earlierRows(const fs::path& dir, const std::string& fileName, double start) {
   std::vector<std::pair<double, fs::path>> starts;
   std::error_code ec;
@@ -36,7 +37,7 @@ std::vector<std::vector<double>> earlierRows(const fs::path& dir, const std::str
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const double until = k + 1 < starts.size() ? starts[k + 1].first : start;
     for (auto& r : readForceRows(readFileBytes(starts[k].second))) {
-      if (r[0] < until) rows.push_back(std::move(r));
+      if (r[0] <= until) rows.push_back(std::move(r));  // the later run has no row at its start time
     }
   }
   return rows;

@@ -129,6 +129,48 @@ TEST_F(FunctionObjects, PatchForcesWritesTheFilteredHistoryAndItsFigures) {
                FatalError);
 }
 
+// A run continued from 0.2 s after one that reached 0.4 s: its filtered history and figures
+// cover the first run's rows up to 0.2 s and its own after (as keyFigures joins the tables), so
+// a peak before the restart is still the peak.
+TEST_F(FunctionObjects, AContinuedRunFiltersTheWholeHistory) {
+  const std::string entry = "bed { type patchForces; patches (bed); filterWindow 0.01; }";
+  ParticleCloud cloud = pptest::flatBed(10, 0.1, 1000.0);
+  {
+    Time time(dir.path());
+    FunctionObjectList functions(functionsDict(entry), time);
+    for (int step = 0; step < 4; ++step) {
+      for (std::size_t i = 0; i < cloud.size(); ++i) cloud.p[i] = step == 0 ? 5000.0 : 1000.0;  // the peak at 0.1 s
+      ++time;
+      functions.execute(time, {.cloud = cloud});
+    }
+    functions.end(time);
+  }
+  pptest::writeText(dir / "system/controlDict",
+                    "startFrom startTime; startTime 0.2; endTime 1; deltaT 0.1; writeInterval 10;\n");
+  std::filesystem::create_directories(dir / "0.2");
+  Time time(dir.path());
+  ASSERT_NEAR(time.value(), 0.2, 1e-12);
+  FunctionObjectList functions(functionsDict(entry), time);
+  for (std::size_t i = 0; i < cloud.size(); ++i) cloud.p[i] = 2000.0;
+  for (int step = 0; step < 2; ++step) {
+    ++time;
+    functions.execute(time, {.cloud = cloud});
+  }
+  functions.end(time);
+  const auto filtered = rows(dir / "postProcessing/bed/0.2/forceFiltered.dat");
+  ASSERT_EQ(filtered.size(), 4u) << "0.1 and 0.2 s of the first run (its 0.3 and 0.4 s replaced), 0.3 and 0.4 s";
+  const int Fn = 3;
+  EXPECT_NEAR(filtered[0][0], 0.1, 1e-12);
+  // A 10 ms window between rows 0.1 s apart: the trace's straight lines around each row; at
+  // the first row cut to [0.1, 0.105] (5000 falling to 4800), at 0.3 s from 1950 to 2000 and 2000.
+  EXPECT_NEAR(filtered[0][Fn], 4900, 1e-9);
+  EXPECT_NEAR(filtered[2][0], 0.3, 1e-12);
+  EXPECT_NEAR(filtered[2][Fn], 1987.5, 1e-9);
+  const std::string figures = pptest::readText(dir / "postProcessing/bed/0.2/forceFigures.txt");
+  EXPECT_NE(figures.find("\nfilteredPeak 4900 N/m\n"), std::string::npos) << figures;
+  EXPECT_NE(figures.find("\nfilteredPeakTime 0.1 s\n"), std::string::npos) << figures;
+}
+
 TEST_F(FunctionObjects, NoFunctionsIsAnEmptyList) {
   Time time(dir.path());
   EXPECT_EQ(FunctionObjectList(time).size(), 0u);
