@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -61,6 +62,9 @@ void prepare(CaseRunner& c, const Layer& layer, double angleDeg, double factor, 
   c.set("system/controlDict", "maxDeltaT", std::to_string(2e-3 / factor));
   c.set("system/controlDict", "endTime", std::to_string(endTime));
 }
+
+// How ctest names a layer (without this, gtest prints the struct's bytes).
+void PrintTo(const Layer& layer, std::ostream* os) { *os << layer.name << " at " << layer.angle << " deg"; }
 
 // The largest displacement of the material particles that start in the middle half of the
 // layer's length, away from its two end faces.
