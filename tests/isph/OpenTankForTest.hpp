@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "MaterialTableForTest.hpp"
-#include "isph/KernelGradientCorrection.hpp"
+#include "isph/discretisation/KernelGradientCorrection.hpp"
 #include "isph/ParticleSystem.hpp"
 #include "sph/kernels/Kernel.hpp"
 

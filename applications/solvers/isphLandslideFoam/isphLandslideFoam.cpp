@@ -7,10 +7,10 @@
 // Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) writes the time at the end of the step
 // and then ends the process by that signal (exit status 130, 143 or 129), so a calling Allrun
 // stops as well. With adjustTimeStep no a step above maxCo is a warning and one past Co 1 or a wall
-// crossing stops the run (isph/FixedStepCheck.hpp). At start it refuses an endTime not after the
+// crossing stops the run (isph/timeStepping/FixedStepCheck.hpp). At start it refuses an endTime not after the
 // start time, a writeInterval shorter than the step, particles outside the scene or behind a wall
-// and speeds far past free fall (isph/StartupChecks.hpp), and a scene edited since particleMesh made 0/ unless
-// -force (isph/SceneUpToDate.hpp).
+// and speeds far past free fall (isph/startup/StartupChecks.hpp), and a scene edited since particleMesh made 0/ unless
+// -force (isph/startup/SceneUpToDate.hpp).
 // Progress (time, percent, wall time, time left) goes to ISPH_PROGRESS_FD when runApplication
 // sets it (the terminal while the log goes to log.isphLandslideFoam), never to the log.
 // With -parallel it runs on the ranks of mpirun -np N (doc/parallel.md: decomposePar first, or
@@ -30,10 +30,10 @@
 #include "core/dictionary/KeywordRecord.hpp"
 #include "core/time/ProgressReporter.hpp"
 #include "core/time/Time.hpp"
-#include "isph/FixedStepCheck.hpp"
-#include "isph/SceneUpToDate.hpp"
-#include "isph/StartupChecks.hpp"
-#include "isph/StepWithRetry.hpp"
+#include "isph/timeStepping/FixedStepCheck.hpp"
+#include "isph/startup/SceneUpToDate.hpp"
+#include "isph/startup/StartupChecks.hpp"
+#include "isph/solvers/StepWithRetry.hpp"
 #include "isph/solvers/ParticleSolver.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "parallel/DecomposedCase.hpp"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/Types.hpp"
-#include "isph/StepState.hpp"
+#include "isph/timeStepping/StepState.hpp"
 
 namespace isph {
 

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/Log.hpp"
-#include "isph/ElasticPlasticStress.hpp"
+#include "isph/deviatoric/ElasticPlasticStress.hpp"
 
 namespace isph {
 

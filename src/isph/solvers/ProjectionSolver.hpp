@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "isph/PressurePoissonEquation.hpp"
+#include "isph/pressure/PressurePoissonEquation.hpp"
 #include "isph/solvers/ParticleSolver.hpp"
 #include "isph/stages/DeviatoricTerm.hpp"
 #include "isph/stages/Projection.hpp"

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "core/Log.hpp"
-#include "isph/IntermediateVelocity.hpp"
+#include "isph/deviatoric/IntermediateVelocity.hpp"
 #include "isph/stages/ExplicitDeviatoricTerm.hpp"
 
 namespace isph {

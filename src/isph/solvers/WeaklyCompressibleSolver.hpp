@@ -11,8 +11,8 @@
 // rank, without linear solves (system/isphSolution is not read).
 #include <memory>
 
-#include "isph/ElasticPlasticStress.hpp"
-#include "isph/WeaklyCompressibleStep.hpp"
+#include "isph/deviatoric/ElasticPlasticStress.hpp"
+#include "isph/solvers/WeaklyCompressibleStep.hpp"
 #include "isph/solvers/ParticleSolver.hpp"
 
 namespace isph {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/Registry.hpp"
-#include "isph/StepReport.hpp"
-#include "isph/StepState.hpp"
+#include "isph/timeStepping/StepReport.hpp"
+#include "isph/timeStepping/StepState.hpp"
 #include "isph/stages/StepContext.hpp"
 
 namespace isph {

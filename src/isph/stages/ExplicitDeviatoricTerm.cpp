@@ -1,6 +1,6 @@
 #include "isph/stages/ExplicitDeviatoricTerm.hpp"
 
-#include "isph/IntermediateVelocity.hpp"
+#include "isph/deviatoric/IntermediateVelocity.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {

@@ -1,6 +1,6 @@
 #include "isph/stages/PlainProjection.hpp"
 
-#include "isph/VelocityCorrection.hpp"
+#include "isph/pressure/VelocityCorrection.hpp"
 #include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {

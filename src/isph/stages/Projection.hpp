@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/Registry.hpp"
-#include "isph/PressurePoissonEquation.hpp"
+#include "isph/pressure/PressurePoissonEquation.hpp"
 #include "isph/stages/StepContext.hpp"
 
 namespace isph {

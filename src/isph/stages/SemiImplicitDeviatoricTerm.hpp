@@ -7,7 +7,7 @@
 // the plastic regularisation cap sets no step.
 #include <memory>
 
-#include "isph/ImplicitViscousStep.hpp"
+#include "isph/deviatoric/ImplicitViscousStep.hpp"
 #include "isph/stages/DeviatoricTerm.hpp"
 
 namespace isph {

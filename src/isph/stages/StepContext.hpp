@@ -7,13 +7,13 @@
 
 #include "core/PhaseTimer.hpp"
 #include "core/dictionary/Dictionary.hpp"
-#include "isph/FreeSurfaceDetector.hpp"
+#include "isph/discretisation/FreeSurfaceDetector.hpp"
 #include "isph/IsphSchemes.hpp"
-#include "isph/KernelGradientCorrection.hpp"
+#include "isph/discretisation/KernelGradientCorrection.hpp"
 #include "isph/ParticleSystem.hpp"
-#include "isph/ViscousStress.hpp"
-#include "isph/WallBoundary.hpp"
-#include "isph/WallFriction.hpp"
+#include "isph/deviatoric/ViscousStress.hpp"
+#include "isph/walls/WallBoundary.hpp"
+#include "isph/walls/WallFriction.hpp"
 #include "isph/materials/MaterialTable.hpp"
 #include "sph/kernels/Kernel.hpp"
 

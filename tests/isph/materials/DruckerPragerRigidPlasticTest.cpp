@@ -8,7 +8,7 @@
 
 #include "core/Error.hpp"
 #include "core/dictionary/Dictionary.hpp"
-#include "isph/StrainRate.hpp"
+#include "isph/deviatoric/StrainRate.hpp"
 #include "isph/materials/DruckerPragerRigidPlastic.hpp"
 #include "isph/materials/EquivalentFriction.hpp"
 

@@ -16,7 +16,7 @@
 
 #include "../OpenTankForTest.hpp"
 #include "StageSetupForTest.hpp"
-#include "isph/FreeSurfaceDetector.hpp"
+#include "isph/discretisation/FreeSurfaceDetector.hpp"
 #include "isph/stages/PlainProjection.hpp"
 
 namespace isph {

@@ -1,0 +1,99 @@
+#include "isph/discretisation/FreeSurfaceDetector.hpp"
+
+#include <cmath>
+
+#include "isph/parallel/GhostExchange.hpp"
+#include "parallel/Reduce.hpp"
+
+namespace isph {
+
+FreeSurfaceDetector::FreeSurfaceDetector(double threshold, double gradientThreshold, double minNeighbourFraction,
+                                         int fullNeighbourCount, double h)
+    : threshold_(threshold),
+      gradientThreshold_(gradientThreshold),
+      h_(h),
+      minNeighbours_(minNeighbourFraction * fullNeighbourCount) {}
+
+void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
+  const std::size_t n = ps.size();
+  flags_.assign(n, 0);
+  divR_.assign(n, 0.0);
+  const auto& x = ps.cloud.positions;
+  const auto& nl = ps.neighbours;
+  const long active = static_cast<long>(ps.nMaterial + ps.nWall);
+  long surface = 0;
+#pragma omp parallel for schedule(static) reduction(+ : surface)
+  for (long a = 0; a < active; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    double div = 0;
+    Vec3 gradC = Vec3::Zero();
+    bool touchesMaterial = false;
+    for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const auto b = static_cast<std::size_t>(nl.index[kk]);
+      const Vec3 xab = x[ua] - x[b];
+      div -= ps.volume[b] * nl.F[kk] * xab.squaredNorm();
+      gradC += ps.volume[b] * nl.F[kk] * xab;
+      touchesMaterial = touchesMaterial || ps.isMaterial(b);
+    }
+    divR_[ua] = div;
+    const double count = double(nl.start[ua + 1] - nl.start[ua]);
+    bool isSurface = div < threshold_ || count < minNeighbours_;
+    if (!isSurface && ps.dimension == 2) {
+      // Sector scan: an empty 45° sector of the support (no particle of any kind) is an
+      // opening to the outside.
+      unsigned occupied = 0;
+      for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
+        const Vec3 xba = x[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] - x[ua];
+        // sectors centred on the lattice directions, so that no lattice neighbour sits on an edge
+        occupied |= 1u << static_cast<unsigned>(supportSector(xba.x(), xba.y()));
+      }
+      isSurface = occupied != 0xffu;
+    } else if (!isSurface && gradC.norm() * h_ > gradientThreshold_) {
+      // 3D: the colour gradient, confirmed by an empty probe region (Marrone et al. 2010).
+      const Vec3 probe = x[ua] - h_ * gradC.normalized();
+      isSurface = true;
+      for (long k = nl.start[ua]; k < nl.start[ua + 1] && isSurface; ++k) {
+        const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+        isSurface = !ps.isMaterial(b) || (x[b] - probe).squaredNorm() >= h_ * h_;
+      }
+    }
+    if (ps.isMaterial(ua)) {
+      flags_[ua] = isSurface;
+      surface += isSurface && ua < ps.ownMaterial();  // (parallel: the own particles)
+    } else {
+      flags_[ua] = isSurface || !touchesMaterial;
+    }
+  }
+  nSurface_ = sumOverRanks(static_cast<std::size_t>(surface));
+  exchangeGhosts(ps, flags_);  // parallel: a ghost's flag from its whole neighbourhood, on its rank
+}
+
+int supportSector(double x, double y) {
+  // w = −(x, y) turned by π/8: sector k is the octant [kπ/4, (k+1)π/4) of w's angle.
+  static const double c = std::cos(M_PI / 8), s = std::sin(M_PI / 8);
+  const double wx = -(c * x - s * y), wy = -(s * x + c * y);
+  if (wy >= 0) return wx > 0 ? (wy < wx ? 0 : 1) : (wy > -wx ? 2 : 3);
+  return wx < 0 ? (-wy < -wx ? 4 : 5) : (-wy > wx ? 6 : 7);
+}
+
+int fullLatticeNeighbourCount(const Kernel& kernel, double dx, const std::string& lattice, int dimension) {
+  const double R = kernel.supportRadius();
+  const int n = static_cast<int>(std::ceil(R / dx)) + 1;
+  int count = 0;
+  if (dimension == 3) {
+    for (int i = -n; i <= n; ++i)
+      for (int j = -n; j <= n; ++j)
+        for (int k = -n; k <= n; ++k) count += dx * std::sqrt(double(i * i + j * j + k * k)) < R;
+  } else if (lattice == "hexagonal") {
+    const double dy = dx * std::sqrt(3.0) / 2.0;
+    for (int j = -n - 1; j <= n + 1; ++j)
+      for (int i = -n - 1; i <= n + 1; ++i) count += std::hypot(dx * (i + 0.5 * (j & 1)), dy * j) < R;
+  } else {
+    for (int i = -n; i <= n; ++i)
+      for (int j = -n; j <= n; ++j) count += dx * std::hypot(double(i), double(j)) < R;
+  }
+  return count - 1;
+}
+
+}  // namespace isph
