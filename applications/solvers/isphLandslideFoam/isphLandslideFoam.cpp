@@ -29,6 +29,7 @@
 #include "core/app/ResourceUsage.hpp"
 #include "core/dictionary/KeywordRecord.hpp"
 #include "core/time/ProgressReporter.hpp"
+#include "core/time/StopSignal.hpp"
 #include "core/time/Time.hpp"
 #include "isph/timeStepping/FixedStepCheck.hpp"
 #include "isph/startup/SceneUpToDate.hpp"
@@ -63,7 +64,7 @@ void run(const isph::ArgList& args) {
   if (listKeywords) isph::enableKeywordRecord();
   isph::checkSceneUpToDate(args.casePath(), args.found("force"));  // an edited scene needs particleMesh again
   isph::Time time(args.casePath(), parallel ? isph::processorName(isph::thisRank()) : std::string());
-  isph::Time::installSignalHandlers();
+  isph::stopSignal::install();
   isph::checkEndTime(time);
   isph::FunctionObjectList functions(time);  // first: a typo in controlDict stops the run at once
   std::optional<isph::Building> building(std::in_place, fmt::format("the solver from time {}", time.timeName()));
@@ -139,7 +140,7 @@ void run(const isph::ArgList& args) {
              std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count(),
              static_cast<double>(std::clock() - loopCpuStart) / CLOCKS_PER_SEC);
   isph::info("Time spent per phase:\n{}", solver.timer().table());
-  if (isph::Time::stopRequested())
+  if (isph::stopSignal::caught())
     isph::info("\nStopped by a signal at time {} (written and complete): continue from it with startFrom latestTime;",
                time.timeName());
 }
@@ -155,6 +156,6 @@ int main(int argc, char* argv[]) {
   // Stopped by Ctrl-C or SIGTERM: the last time is written; end by that signal (status 130 or
   // 143), so that an Allrun running this solver stops instead of post-processing a run that
   // did not reach endTime.
-  if (status == 0) isph::Time::exitBySignalIfCaught();
+  if (status == 0) isph::stopSignal::exitIfCaught();
   return status;
 }

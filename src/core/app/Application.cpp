@@ -15,7 +15,7 @@
 #include "core/app/OutOfMemory.hpp"
 #include "core/io/CaseLock.hpp"
 #include "core/io/StagingRecovery.hpp"
-#include "core/time/Time.hpp"
+#include "core/time/StopSignal.hpp"
 
 namespace isph {
 
@@ -83,7 +83,7 @@ int runApplication(const ApplicationSpec& spec, int argc, const char* const* arg
     body(args);
     // "End" closes the log of a finished run only: runApplication (etc/RunFunctions) skips a
     // step whose log ends so, and runs again one stopped by a signal.
-    if (banner && !Time::stopRequested()) std::cout << "\nEnd\n" << std::flush;
+    if (banner && !stopSignal::caught()) std::cout << "\nEnd\n" << std::flush;
     return 0;
   } catch (const HelpRequested& help) {
     std::cout << help.usage << std::flush;

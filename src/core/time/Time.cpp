@@ -1,21 +1,18 @@
-// The run-time controller: start time, stepping, write times, controlDict re-reading, signals.
+// The run-time controller: start time, stepping, write times, controlDict re-reading (the
+// signals that stop a run: StopSignal.hpp).
 #include "core/time/Time.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <csignal>
-#include <cstdio>
 #include <ctime>
-#include <iostream>
 
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 #include "core/ParallelRun.hpp"
 #include "core/io/AtomicFile.hpp"
 #include "core/io/FoamFileHeader.hpp"
+#include "core/time/StopSignal.hpp"
 #include "core/time/TimeName.hpp"
 
 namespace isph {
@@ -25,21 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::vector<std::string> otherControlDictKeywords{"application", "functions", "libs"};
-
-volatile std::sig_atomic_t signalCaught = 0;
-
-extern "C" void onStopSignal(int sig) {
-  if (signalCaught) {  // second signal: abort as the default action does
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
-    return;
-  }
-  signalCaught = sig;
-  static const char message[] =
-      "\n--> Signal caught: writing at the end of the next time step and stopping"
-      " (send it again to abort)\n";
-  [[maybe_unused]] const auto n = ::write(STDERR_FILENO, message, sizeof message - 1);
-}
 
 fs::file_time_type modificationTime(const fs::path& file) {
   std::error_code ec;
@@ -193,8 +175,9 @@ Time& Time::operator++() {
   readModifiedControlDict();
   // A parallel run's ranks stop at the same step: a signal that one rank caught (mpirun passes
   // it on to each at its own moment) stops them all.
-  if (const int sig = agreeOverRanks(signalCaught); sig && !signalCaught) signalCaught = sig;
-  if (signalCaught && !signalHandled_) {
+  const int sig = agreeOverRanks(stopSignal::caught());
+  if (sig && !stopSignal::caught()) stopSignal::setCaught(sig);
+  if (stopSignal::caught() && !signalHandled_) {
     signalHandled_ = true;
     stopAt_ = StopAt::writeNow;
     info("Signal caught: writing at the end of this time step and stopping");
@@ -327,28 +310,6 @@ bool Time::readModifiedControlDict() {
     return false;
   }
   return true;
-}
-
-void Time::installSignalHandlers() {
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  sigaction(SIGHUP, &action, nullptr);  // the terminal closed (or ssh dropped): as SIGTERM
-}
-
-bool Time::stopRequested() { return signalCaught != 0; }
-
-void Time::exitBySignalIfCaught() {
-  const int sig = signalCaught;
-  if (sig == 0) return;
-  std::cout.flush();
-  std::cerr.flush();
-  std::fflush(nullptr);
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
 }
 
 std::string Time::executionTimeLine() const {

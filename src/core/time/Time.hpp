@@ -78,16 +78,6 @@ class Time {
   // whether it was re-read. stopAt writeNow/noWriteNow, endTime and deltaT are honoured.
   bool readModifiedControlDict();
 
-  // First SIGINT, SIGTERM or SIGHUP: write at the end of the next step and stop; a second one
-  // aborts.
-  static void installSignalHandlers();
-  static bool stopRequested();
-  // After a run stopped that way has written and shut down: ends the process by the signal
-  // it caught, with the default action (status 130 for SIGINT, 143 for SIGTERM, 129 for
-  // SIGHUP), so that a calling script (Allrun) stops too instead of post-processing a run that
-  // did not reach endTime. Returns (doing nothing) when no signal was caught.
-  static void exitBySignalIfCaught();
-
   // "ExecutionTime = 1.23 s  ClockTime = 2 s" (process CPU time, wall-clock since construction).
   std::string executionTimeLine() const;
 
