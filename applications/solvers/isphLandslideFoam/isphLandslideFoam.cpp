@@ -35,6 +35,7 @@
 #include "isph/startup/SceneUpToDate.hpp"
 #include "isph/startup/StartupChecks.hpp"
 #include "isph/solvers/StepWithRetry.hpp"
+#include "isph/parallel/OwnedParticles.hpp"
 #include "isph/solvers/ParticleSolver.hpp"
 #include "linearSolvers/ParallelEnvironment.hpp"
 #include "parallel/DecomposedCase.hpp"

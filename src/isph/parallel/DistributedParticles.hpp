@@ -70,22 +70,6 @@ class DistributedParticles {
   long ghostSum_ = 0, steps_ = 0;
 };
 
-// The mean number of neighbours of the own particles over all ranks (collective).
-double meanNeighbours(const ParticleSystem& ps);
-
-// Which particles are this rank's own (1) or ghosts (0); all 1 in a serial run.
-std::vector<char> ownedMask(const ParticleSystem& ps);
-
-// The own particles' entries of a per-particle field (all of it in a serial run), for output.
-template <class T>
-std::vector<T> ownedValues(const ParticleSystem& ps, const std::vector<T>& field) {
-  if (!ps.halo) return field;
-  std::vector<T> out;
-  for (std::size_t a = 0; a < field.size(); ++a) {
-    if (ps.isOwned(a)) out.push_back(field[a]);
-  }
-  return out;
-}
-ParticleCloud ownedCloud(const ParticleSystem& ps);
+// What a rank owns of a ParticleSystem (its output, its mean neighbours): OwnedParticles.hpp.
 
 }  // namespace isph

@@ -15,6 +15,7 @@
 #include "isph/startup/StartupChecks.hpp"
 #include "isph/walls/WallPenetrationGuard.hpp"
 #include "isph/parallel/GhostExchange.hpp"
+#include "isph/parallel/OwnedParticles.hpp"
 #include "isph/parallel/StepStateOverRanks.hpp"
 #include "parallel/DecomposedCase.hpp"
 #include "parallel/Reduce.hpp"
