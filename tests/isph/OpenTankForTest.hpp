@@ -4,7 +4,8 @@
 // ((i + ½) dx, (j + ½) dx)) on a bed at y = 0 between side walls at x = 0 and x = n dx up to
 // y = (n + 1) dx, wall particles on the surfaces, two dummy layers dx apart behind them, arcs of
 // dummies round the two inside corners; its top row flagged as the free surface (`surface`).
-// At rest, p = 0, frictionless walls.
+// At rest, p = 0, frictionless walls. OpenTank(OpenTank::ThreeD{}) builds the same tank in 3D.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -33,6 +34,7 @@ struct OpenTank {
   ParticleSystem ps;
   KernelGradientCorrection L;
   std::vector<char> surface;  // the top row
+  int side = n;               // material particles across and over the depth
 
   explicit OpenTank(double jitter = 0, bool flatSurface = true) {
     materials = materialTable("openTank", "water { model newtonian; rho 1000; nu 1e-6; }", {"water"});
@@ -85,6 +87,61 @@ struct OpenTank {
         dummy(W + ax, -ay);
       }
     }
+    finish();
+    for (int i = 0; i < n; ++i) surface[static_cast<std::size_t>((n - 1) * n + i)] = 1;
+  }
+
+  // The same tank in three dimensions, n3 particles along each side (z the second horizontal
+  // direction): material particle (k n3 + j) n3 + i at ((i + ½) dx, (j + ½) dx, (k + ½) dx), the
+  // bed at y = 0 and four side walls at x = 0, x = n3 dx, z = 0, z = n3 dx up to y = (n3 + 1) dx,
+  // wall particles on the lattice of the walls' surfaces (edges and corners: the mean of their
+  // faces' normals), dummies on that lattice behind them within 2 dx of the tank (the 3D
+  // counterpart of the 2D tank's two layers and corner arcs).
+  struct ThreeD {
+    int n3 = 6;
+  };
+  explicit OpenTank(ThreeD three) : kernel(makeKernel("WendlandC2", 1.3 * dx, 3)) {
+    materials = materialTable("openTank", "water { model newtonian; rho 1000; nu 1e-6; }", {"water"});
+    ParticleCloud& c = ps.cloud;
+    c.properties.materials = {"water"};
+    c.properties.patches = {{"tank", 0.0}};
+    c.properties.spacing = dx;
+    c.properties.dimension = 3;
+    const int m = three.n3, top = m + 1;
+    side = m;
+    label id = 0;
+    for (int k = 0; k < m; ++k)
+      for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i)
+          c.push_back(Vec3((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx), id++, Vec3::Zero(), 0.0, 0,
+                      ParticleKind::material, -1, Vec3::Zero(), rho * dx * dx * dx);
+    // Lattice sites (i, j, k) dx: on the tank's surface a wall particle, outside it within 2 dx
+    // a dummy (the walls first: the particle system orders material, wall, dummy).
+    auto outside = [&](int i, int j, int k) {  // distance outside the box, in dx
+      const double ox = std::max({0, -i, i - m}), oy = std::max(0, -j), oz = std::max({0, -k, k - m});
+      return std::sqrt(ox * ox + oy * oy + oz * oz);
+    };
+    for (const bool walls : {true, false}) {
+      for (int k = -2; k <= m + 2; ++k)
+        for (int j = -2; j <= top; ++j)
+          for (int i = -2; i <= m + 2; ++i) {
+            const Vec3 x(i * dx, j * dx, k * dx);
+            const bool onSurface = outside(i, j, k) == 0 && (i == 0 || i == m || k == 0 || k == m || j == 0);
+            if (walls && onSurface) {
+              const Vec3 normal = Vec3(i == 0 ? 1 : i == m ? -1 : 0, j == 0 ? 1 : 0, k == 0 ? 1 : k == m ? -1 : 0).normalized();
+              c.push_back(x, id++, Vec3::Zero(), 0.0, -1, ParticleKind::wall, 0, normal, 0);
+            } else if (!walls && outside(i, j, k) > 0 && outside(i, j, k) <= 2 + 1e-9) {
+              c.push_back(x, id++, Vec3::Zero(), 0.0, -1, ParticleKind::dummy, 0, Vec3::Zero(), 0);
+            }
+          }
+    }
+    finish();
+    for (int k = 0; k < m; ++k)
+      for (int i = 0; i < m; ++i) surface[static_cast<std::size_t>((k * m + m - 1) * m + i)] = 1;
+  }
+
+  // The particle system's state at rest, p = 0 (as the solver starts), the neighbours and L.
+  void finish() {
     initialiseParticleSystem(ps, *materials, *kernel);  // material first, in the order above
     ps.neighbours.build(ps.cloud.positions, *kernel);
     ps.frictionWall.assign(ps.size(), 0);  // frictionless: G_a = ρ g along the walls
@@ -94,7 +151,6 @@ struct OpenTank {
     ps.cloud.p.assign(ps.size(), 0.0);
     L.update(ps, true, 0.25);
     surface.assign(ps.size(), 0);
-    for (int i = 0; i < n; ++i) surface[static_cast<std::size_t>((n - 1) * n + i)] = 1;
   }
 };
 

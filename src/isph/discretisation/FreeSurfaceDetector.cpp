@@ -1,11 +1,17 @@
 #include "isph/discretisation/FreeSurfaceDetector.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 #include "isph/parallel/GhostExchange.hpp"
 #include "parallel/Reduce.hpp"
 
 namespace isph {
+
+namespace {
+// The 26 lattice directions of latticeDirection (bit 13, the zero vector, left out).
+constexpr std::uint32_t allLatticeDirections = ((1u << 27) - 1) & ~(1u << 13);
+}  // namespace
 
 FreeSurfaceDetector::FreeSurfaceDetector(double threshold, double gradientThreshold, double minNeighbourFraction,
                                          int fullNeighbourCount, double h)
@@ -49,13 +55,23 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
         occupied |= 1u << static_cast<unsigned>(supportSector(xba.x(), xba.y()));
       }
       isSurface = occupied != 0xffu;
-    } else if (!isSurface && gradC.norm() * h_ > gradientThreshold_) {
-      // 3D: the colour gradient, confirmed by an empty probe region (Marrone et al. 2010).
-      const Vec3 probe = x[ua] - h_ * gradC.normalized();
-      isSurface = true;
-      for (long k = nl.start[ua]; k < nl.start[ua + 1] && isSurface; ++k) {
-        const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
-        isSurface = !ps.isMaterial(b) || (x[b] - probe).squaredNorm() >= h_ * h_;
+    } else if (!isSurface) {
+      // 3D: one of the 26 lattice directions of the support holds no particle of any kind (the
+      // 2D scan's counterpart: the waterline against a wall), or the colour gradient confirmed
+      // by a probe region empty of particles of any kind (Marrone et al. 2010, with the walls
+      // filling the support: material half a spacing from a wall has its gradient into it).
+      std::uint32_t occupied = 0;
+      for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
+        occupied |= 1u << latticeDirection(x[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] - x[ua]);
+      }
+      isSurface = occupied != allLatticeDirections;
+      if (!isSurface && gradC.norm() * h_ > gradientThreshold_) {
+        const Vec3 probe = x[ua] - h_ * gradC.normalized();
+        isSurface = true;
+        for (long k = nl.start[ua]; k < nl.start[ua + 1] && isSurface; ++k) {
+          const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+          isSurface = (x[b] - probe).squaredNorm() >= h_ * h_;
+        }
       }
     }
     if (ps.isMaterial(ua)) {
@@ -67,6 +83,14 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
   }
   nSurface_ = sumOverRanks(static_cast<std::size_t>(surface));
   exchangeGhosts(ps, flags_);  // parallel: a ghost's flag from its whole neighbourhood, on its rank
+}
+
+int latticeDirection(const Vec3& v) {
+  // Each component −1, 0 or +1 by whether it exceeds tan(π/8) times the largest: cones about the
+  // face (6), edge (12) and corner (8) directions of a cubic lattice, numbered 0-26 (13 is none).
+  const double limit = std::tan(M_PI / 8) * v.cwiseAbs().maxCoeff();
+  auto sign = [&](double c) { return c > limit ? 2 : c < -limit ? 0 : 1; };
+  return 9 * sign(v.z()) + 3 * sign(v.y()) + sign(v.x());
 }
 
 int supportSector(double x, double y) {

@@ -10,8 +10,11 @@
 //    part of the missing support and lift ∇·r over 1.5, without flagging material crowded
 //    against a wall (particleMesh leaves it half a spacing from the wall particles), which
 //    a colour-gradient test |∇C| h > threshold takes for a surface and so pins p = 0 inside.
-//  - 3D: |∇C| h above its threshold, confirmed by a probe at x_a + h n, n = −∇C/|∇C|, with
-//    no material within h (a simplified scan of Marrone et al. 2010).
+//  - 3D: one of the 26 lattice directions of its support holds no particle of any kind (the
+//    2D scan's counterpart), or |∇C| h is above its threshold, confirmed by a probe at
+//    x_a + h n, n = −∇C/|∇C|, with no particle of any kind within h (a simplified scan of
+//    Marrone et al. 2010; walls fill the support as in the 2D scan, or material against a
+//    wall would be taken for a surface).
 // Wall and dummy particles count as neighbours.
 #include <vector>
 
@@ -47,6 +50,11 @@ class FreeSurfaceDetector {
 // (which cost 2.4 % of a barrier run); a direction on an edge between two sectors may fall in
 // either.
 int supportSector(double x, double y);
+
+// The 3D scan's direction (0-26) of v: each component −1, 0 or +1 by whether it exceeds
+// tan(π/8) times the largest (cones about the cubic lattice's face, edge and corner
+// directions), as 9 (z + 1) + 3 (y + 1) + x + 1; 13 only for the zero vector.
+int latticeDirection(const Vec3& v);
 
 // Neighbours of a particle inside a full lattice (self excluded), for the safety net.
 int fullLatticeNeighbourCount(const Kernel& kernel, double dx, const std::string& lattice, int dimension);

@@ -22,14 +22,15 @@
 namespace isph {
 namespace {
 
-using test::dx, test::g, test::n, test::rho;
+using test::dx, test::g, test::rho;
 constexpr double dt = 1e-3;
 
-// The tank and the models a step's stages work on.
+// The tank (2D, or 3D with OpenTank::ThreeD) and the models a step's stages work on.
 struct TankStep {
   test::OpenTank tank;
-  FreeSurfaceDetector freeSurface{1.5, 0.05, 0.5, fullLatticeNeighbourCount(*tank.kernel, dx, "square", 2),
-                                  tank.kernel->h()};
+  int dimension = tank.ps.dimension;
+  FreeSurfaceDetector freeSurface{dimension == 2 ? 1.5 : 2.75, 0.05, 0.5,  // the solver's defaults (IsphSchemes)
+                                  fullLatticeNeighbourCount(*tank.kernel, dx, "square", dimension), tank.kernel->h()};
   WallFriction friction{tank.ps, *tank.materials, g, 1e-5};
   WallBoundary walls{tank.ps, *tank.materials, g, 0.25, friction.slidingMaterial()};
   ViscousStress viscousStress{tank.ps, *tank.materials, tank.L, 0.25};
@@ -39,7 +40,10 @@ struct TankStep {
                 timer, g,       wallFriction};
   PressurePoissonEquation ppe{PpeSettings{}, false, exactSolver()};
 
-  TankStep() { startStep(); }
+  template <class... TankArguments>
+  explicit TankStep(TankArguments... arguments) : tank(arguments...) {
+    startStep();
+  }
 
   void startStep() {
     freeSurface.detect(tank.ps);
@@ -49,7 +53,7 @@ struct TankStep {
     const Dictionary d = Dictionary::parse("p { solver EigenLU; tolerance 1e-12; }\n", "system/isphSolution");
     return makeLinearSolver(d.subDict("p"), "p");
   }
-  double height() const { return (n - 0.5) * dx; }  // of the free-surface particles, where p = 0
+  double height() const { return (tank.side - 0.5) * dx; }  // of the free-surface particles, where p = 0
   double worstPressureError() const {
     double worst = 0;
     for (std::size_t a = 0; a < tank.ps.nMaterial; ++a) {
@@ -65,11 +69,16 @@ struct TankStep {
   }
 };
 
-TEST(ProjectionAtRest, OnlyTheTopRowIsTheFreeSurface) {
-  TankStep s;
+void expectOnlyTheTopRowIsTheFreeSurface(const TankStep& s) {
   for (std::size_t a = 0; a < s.tank.ps.nMaterial; ++a) {
     EXPECT_EQ(s.freeSurface.flags()[a], s.tank.surface[a]) << "material particle " << a;
   }
+}
+
+TEST(ProjectionAtRest, OnlyTheTopRowIsTheFreeSurface) { expectOnlyTheTopRowIsTheFreeSurface(TankStep()); }
+
+TEST(ProjectionAtRest, OnlyTheTopLayerIsTheFreeSurfaceIn3D) {
+  expectOnlyTheTopRowIsTheFreeSurface(TankStep(test::OpenTank::ThreeD{}));
 }
 
 // A step from rest: u* = g dt (the predictor of water at rest), the PPE and Eq. 11.
@@ -79,14 +88,13 @@ void firstStep(Projection& projection, TankStep& s) {
   projection.correct(s.c, fromRest, dt);
 }
 
-TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPressure) {
-  TankStep s;
-  const test::StageSetupForTest setup("", "water");
+void expectTheProjectionKeepsWaterAtRest(TankStep& s) {
+  const test::StageSetupForTest setup("", "water", s.dimension);
   PlainProjection plain(setup.setup());
   ASSERT_NO_FATAL_FAILURE(firstStep(plain, s));
   const double pBed = rho * g.norm() * s.height();
-  std::printf("plain projection: max |p - rho g (H - y)| = %.3g of rho g H, max |u| = %.3g m/s (g dt = %.3g)\n",
-              s.worstPressureError() / pBed, s.fastest(), g.norm() * dt);
+  std::printf("plain projection, %dD: max |p - rho g (H - y)| = %.3g of rho g H, max |u| = %.3g m/s (g dt = %.3g)\n",
+              s.dimension, s.worstPressureError() / pBed, s.fastest(), g.norm() * dt);
   EXPECT_LT(s.worstPressureError(), 1e-9 * pBed);
   EXPECT_LT(s.fastest(), 1e-9 * g.norm() * dt);
   for (std::size_t b = s.tank.ps.wallBegin(); b < s.tank.ps.dummyBegin(); ++b) {
@@ -94,6 +102,17 @@ TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPress
       EXPECT_NEAR(s.tank.ps.cloud.p[b], pBed, 1e-9 * pBed);
     }
   }
+}
+
+TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPressure) {
+  TankStep s;
+  expectTheProjectionKeepsWaterAtRest(s);
+}
+
+// The same in 3D (issue 50: the projection with the dimension as data), the tank 6 particles a side.
+TEST(ProjectionAtRest, ThePlainProjectionKeepsWaterAtRestWithTheHydrostaticPressureIn3D) {
+  TankStep s(test::OpenTank::ThreeD{});
+  expectTheProjectionKeepsWaterAtRest(s);
 }
 
 }  // namespace

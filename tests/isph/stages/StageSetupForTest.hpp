@@ -10,19 +10,21 @@
 namespace isph::test {
 
 struct StageSetupForTest {
-  StageSetupForTest(const std::string& schemesText, const std::string& material)
+  StageSetupForTest(const std::string& schemesText, const std::string& material, int dimension = 2)
       : schemes(Dictionary::parse(schemesText, "isphSchemes")),
         solution("isphSolution"),
-        common(IsphSchemes::read(schemes, 2)),
+        common(IsphSchemes::read(schemes, dimension)),
+        dimension(dimension),
         materials(materialTable("stages", "sand { model rigidPlastic; rho 2650; phi 30; } "
                                           "water { model newtonian; rho 1000; nu 1e-6; } air { model inviscid; rho 1; }",
                                 {material})) {}
 
-  StageSetup setup() const { return {schemes, solution, common, *materials, 2}; }
+  StageSetup setup() const { return {schemes, solution, common, *materials, dimension}; }
 
   Dictionary schemes;
   Dictionary solution;
   IsphSchemes common;
+  int dimension;
   std::unique_ptr<MaterialTable> materials;
 };
 
