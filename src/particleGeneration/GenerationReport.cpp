@@ -7,6 +7,7 @@
 
 #include "core/Log.hpp"
 #include "core/Strings.hpp"
+#include "particleGeneration/Extrusion.hpp"
 
 namespace isph {
 
@@ -28,20 +29,21 @@ std::string ratio(double value, double reference) {
   return reference > 0 ? fmt::format("{:.4f}", value / reference) : std::string("-");
 }
 
-void logRegions(const GenerationResult& result) {
+void logRegions(const Scene& scene, const GenerationResult& result) {
   if (result.regions.empty()) return;
+  const bool threeD = scene.dimension == 3;
   const std::size_t w = widest(
       result.regions, [](const RegionReport& r) { return r.name; }, 6);
   const std::size_t wm = widest(
       result.regions, [](const RegionReport& r) { return r.material; }, 8);
-  info(
-      "\nMaterial regions (the first listed wins where they overlap; areas and masses per unit "
-      "width)");
+  info("\nMaterial regions (the first listed wins where they overlap; {})",
+       threeD ? "volumes and masses" : "areas and masses per unit width");
   info(
       "    {:<{}}  {:<8} {:<{}} {:>9} {:>8} {:>8} {:>8} {:>10} {:>12} {:>12} {:>7} {:>12} {:>12} "
       "{:>7}",
       "region", w, "type", "material", wm, "sites", "lost", "inSolid", "nearWall", "particles",
-      "area [m2]", "geometric", "ratio", "mass [kg/m]", "rho*area", "ratio");
+      threeD ? "volume [m3]" : "area [m2]", "geometric", "ratio", threeD ? "mass [kg]" : "mass [kg/m]",
+      threeD ? "rho*volume" : "rho*area", "ratio");
   for (const RegionReport& r : result.regions) {
     long lost = 0;
     for (const auto& [name, n] : r.lostTo) lost += n;
@@ -71,7 +73,8 @@ void logRegions(const GenerationResult& result) {
   }
   info("\nMaterials");
   for (const auto& [name, totals] : perMaterial) {
-    info("    {:<{}} {:>10} particles  mass {:.6g} kg/m", name, wm, totals.first, totals.second);
+    info("    {:<{}} {:>10} particles  mass {:.6g} {}", name, wm, totals.first, totals.second,
+         threeD ? "kg" : "kg/m");
   }
 }
 
@@ -106,6 +109,17 @@ void logScene(const Scene& scene) {
   info("    spacing {:.6g} m, {} lattice (site area {:.6g} m2), dimension {}, cloud '{}'",
        scene.spacing, toString(scene.lattice), lattice.siteArea(), scene.dimension,
        scene.cloudName);
+  if (scene.dimension == 3) {
+    const std::size_t layers = extrusionLayers(scene).size();
+    info("    3D: the x-y scene extruded along z over width {:.6g} m: {} layers of dx ({:.6g} m); "
+         "side walls: {}",
+         scene.width, layers, static_cast<double>(layers) * scene.spacing,
+         scene.sideWalls ? fmt::format("patch '{}' at z = 0, '{}' at z = {:.6g}",
+                                       scene.patches.at(static_cast<std::size_t>(scene.sideWalls->patch[0])).name,
+                                       scene.patches.at(static_cast<std::size_t>(scene.sideWalls->patch[1])).name,
+                                       static_cast<double>(layers) * scene.spacing)
+                         : std::string("none (the ends are open)"));
+  }
   if (scene.transform.isIdentity()) {
     info("    transform: none (scene frame = case frame)");
   } else {
@@ -123,7 +137,7 @@ void logScene(const Scene& scene) {
 }
 
 void logGeneration(const Scene& scene, const GenerationResult& result) {
-  logRegions(result);
+  logRegions(scene, result);
   logWalls(scene, result);
 
   const ParticleCloud& cloud = result.cloud;

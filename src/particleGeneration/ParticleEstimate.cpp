@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/io/ReadFile.hpp"
 
@@ -19,8 +20,17 @@ ParticleEstimate estimateParticles(const Scene& scene) {
     e.tested +=
         (box.size().x() / lattice.spacing() + 3) * (box.size().y() / lattice.rowSpacing() + 3);
   }
+  BoundingBox walls;
   for (const WallSpec& w : scene.walls) {
     e.walls += (w.surface->chain().length() / scene.spacing + 1) * scene.wallLayers;
+    walls.extend(w.surface->boundingBox().inflated((scene.wallLayers - 1) * scene.spacing));  // the dummies' reach
+  }
+  if (scene.dimension == 3) {  // the section repeated along z, and its side walls (Extrusion.hpp)
+    const double layers = std::max(1.0, std::round(scene.width / scene.spacing));
+    e.material *= layers;
+    e.walls *= layers;
+    if (scene.sideWalls && !walls.empty())
+      e.walls += 2.0 * scene.wallLayers * (walls.size().x() / scene.spacing + 1) * (walls.size().y() / scene.spacing + 1);
   }
   return e;
 }

@@ -8,6 +8,7 @@
 //   tested     Σ over the regions of the lattice sites in their bounding boxes (what the
 //              filling tests one by one: a thin slanted region tests many more than it fills)
 //   walls      Σ over the walls of length / dx × layers
+//   3D         each of these times the layers along z, and the side walls over the walls' box
 //
 // Memory: particleMesh's own about 300 bytes per particle (the cloud's fields and the
 // generation's temporaries); the solver's 2.4-4.6 KB per particle as the scaling benchmark

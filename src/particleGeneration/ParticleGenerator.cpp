@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/app/OutOfMemory.hpp"
+#include "particleGeneration/Extrusion.hpp"
 #include "particleGeneration/LithostaticPressure.hpp"
 #include "particleGeneration/ParticleEstimate.hpp"
 #include "particleGeneration/RegionFilling.hpp"
@@ -67,6 +68,32 @@ void closestPair(const std::vector<Vec2>& material, const std::vector<double>& n
   }
 }
 
+// The section's extent (scene frame): its material sites, wall and dummy particles.
+BoundingBox sectionBounds(const std::vector<Vec2>& material, const std::vector<WallParticle>& walls) {
+  BoundingBox box;
+  for (const Vec2& s : material) box.extend(toVec3(s));
+  for (const WallParticle& w : walls) box.extend(toVec3(w.position));
+  return box;
+}
+
+// The report of the side wall at z = 0 (end 0) or z = width (end 1).
+WallReport sideWallReport(const Scene& scene, const std::vector<SideWallParticle>& particles, int end) {
+  const auto patch = static_cast<std::size_t>(scene.sideWalls->patch[end]);
+  const double width = static_cast<double>(extrusionLayers(scene).size()) * scene.spacing;
+  WallReport report;
+  report.name = end == 0 ? "sideWall0" : "sideWall1";
+  report.patch = scene.patches.at(patch).name;
+  report.type = "side";
+  report.side = fmt::format("z > {:.6g} (3D)", end == 0 ? 0.0 : width);
+  if (end == 1) report.side = fmt::format("z < {:.6g} (3D)", width);
+  report.frictionAngle = scene.patches[patch].frictionAngle;
+  for (const SideWallParticle& p : particles) {
+    if (p.end == end) ++(p.isWall ? report.stats.wallParticles : report.stats.dummyParticles);
+  }
+  report.stats.minSpacing = report.stats.maxSpacing = scene.spacing;
+  return report;
+}
+
 }  // namespace
 
 GenerationResult generateParticles(const Scene& scene) {
@@ -94,6 +121,12 @@ GenerationResult generateParticles(const Scene& scene) {
                                       dx, estimate.particles(), estimate.material, estimate.walls));
   const WallLayerResult wallLayers = generateWallLayers(walls, scene.wallLayers, dx);
 
+  // A 3D scene repeats the section along z (Extrusion.hpp): one copy per layer, each particle
+  // standing for `depth` of width.
+  const std::vector<double> layers = extrusionLayers(scene);
+  const double depth = extrusionDepth(scene);
+  const double nLayers = static_cast<double>(layers.size());
+
   GenerationResult result;
   std::vector<Vec2> materialPositions;
   std::vector<double> nearestSurface, allNearest;
@@ -113,9 +146,9 @@ GenerationResult generateParticles(const Scene& scene) {
         removeBlockedSites(sites[r].sites, walls, scene.wallClearance * dx, nearestSurface, dx);
     report.inSolid = removed.inSolid;
     report.nearWall = removed.nearWall;
-    report.particles = static_cast<long>(sites[r].sites.size());
-    report.geometricArea = spec.shape->measure();
-    report.particleArea = static_cast<double>(report.particles) * lattice.siteArea();
+    report.particles = static_cast<long>(sites[r].sites.size() * layers.size());
+    report.geometricArea = spec.shape->measure() * depth * nLayers;
+    report.particleArea = static_cast<double>(report.particles) * lattice.siteArea() * depth;
     report.mass = report.particleArea * spec.density;
     result.regions.push_back(std::move(report));
     materialPositions.insert(materialPositions.end(), sites[r].sites.begin(), sites[r].sites.end());
@@ -123,7 +156,20 @@ GenerationResult generateParticles(const Scene& scene) {
   }
   closestPair(materialPositions, allNearest, wallLayers.particles, dx, result);
 
-  // The cloud: material particles by region, then wall and dummy particles by wall.
+  const Transform& T = scene.transform;
+  std::vector<double> pressure(materialPositions.size(), 0.0);  // of the section's sites
+  if (scene.initialPressure == InitialPressure::lithostatic) {
+    std::vector<double> densities;
+    for (const RegionSpec& r : scene.regions) densities.push_back(r.density);
+    const double g = scene.gravity.norm();
+    const Vec2 up = toVec2(T.inverseVector(-scene.gravity / g));
+    pressure = lithostaticPressure(materialPositions, shapes, densities, up, g);
+  }
+
+  // The cloud: material particles by region (then layer), then wall and dummy particles by
+  // wall (then layer), then the side walls.
+  const std::vector<SideWallParticle> sideWalls =
+      sideWallParticles(scene, sectionBounds(materialPositions, wallLayers.particles), wallLayers.particles);
   ParticleCloud& cloud = result.cloud;
   cloud.name = scene.cloudName;
   cloud.properties.materials = scene.materials;
@@ -131,20 +177,23 @@ GenerationResult generateParticles(const Scene& scene) {
   cloud.properties.dimension = scene.dimension;
   cloud.properties.spacing = dx;
   cloud.properties.lattice = toString(scene.lattice);
-  const std::size_t nMaterial = materialPositions.size();
-  cloud.reserve(nMaterial + wallLayers.particles.size());
-  const Transform& T = scene.transform;
+  cloud.reserve((materialPositions.size() + wallLayers.particles.size()) * layers.size() + sideWalls.size());
+  const auto at = [&](const Vec2& s, double z) { return T.point(Vec3(s.x(), s.y(), z)); };
   label id = 0;
+  std::size_t site = 0;
   for (std::size_t r = 0; r < sites.size(); ++r) {
     const RegionSpec& spec = scene.regions[r];
-    const double mass = spec.density * lattice.siteArea();
+    const double mass = spec.density * lattice.siteArea() * depth;
     const Vec3 U = T.vector(spec.initialVelocity);
-    for (const Vec2& s : sites[r].sites) {
-      const Vec3 x = T.point(toVec3(s));
-      cloud.push_back(x, id++, U, 0.0, spec.material, ParticleKind::material, -1, Vec3::Zero(),
-                      mass);
-      result.regions[r].bounds.extend(x);
+    for (const double z : layers) {
+      for (std::size_t s = 0; s < sites[r].sites.size(); ++s) {
+        const Vec3 x = at(sites[r].sites[s], z);
+        cloud.push_back(x, id++, U, pressure[site + s], spec.material, ParticleKind::material, -1, Vec3::Zero(),
+                        mass);
+        result.regions[r].bounds.extend(x);
+      }
     }
+    site += sites[r].sites.size();
   }
   for (std::size_t w = 0; w < walls.size(); ++w) {
     WallReport report;
@@ -155,24 +204,33 @@ GenerationResult generateParticles(const Scene& scene) {
     report.frictionAngle =
         scene.patches[static_cast<std::size_t>(scene.walls[w].patch)].frictionAngle;
     report.stats = wallLayers.stats[w];
+    report.stats.wallParticles *= static_cast<long>(layers.size());
+    report.stats.dummyParticles *= static_cast<long>(layers.size());
     result.walls.push_back(std::move(report));
   }
-  for (const WallParticle& p : wallLayers.particles) {
-    const WallSpec& spec = scene.walls[static_cast<std::size_t>(p.wall)];
-    const Vec3 x = T.point(toVec3(p.position));
-    cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1,
-                    p.isWall ? ParticleKind::wall : ParticleKind::dummy, spec.patch,
-                    T.vector(toVec3(p.normal)), spec.density * dx * dx);
-    result.walls[static_cast<std::size_t>(p.wall)].bounds.extend(x);
+  for (const double z : layers) {
+    for (const WallParticle& p : wallLayers.particles) {
+      const WallSpec& spec = scene.walls[static_cast<std::size_t>(p.wall)];
+      const Vec3 x = at(p.position, z);
+      cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1,
+                      p.isWall ? ParticleKind::wall : ParticleKind::dummy, spec.patch,
+                      T.vector(toVec3(p.normal)), spec.density * dx * dx * depth);
+      result.walls[static_cast<std::size_t>(p.wall)].bounds.extend(x);
+    }
   }
-
-  if (scene.initialPressure == InitialPressure::lithostatic) {
-    std::vector<double> densities;
-    for (const RegionSpec& r : scene.regions) densities.push_back(r.density);
-    const double g = scene.gravity.norm();
-    const Vec2 up = toVec2(T.inverseVector(-scene.gravity / g));
-    const std::vector<double> p = lithostaticPressure(materialPositions, shapes, densities, up, g);
-    std::copy(p.begin(), p.end(), cloud.p.begin());
+  const std::size_t firstSide = result.walls.size();
+  if (!sideWalls.empty()) {
+    for (int end = 0; end < 2; ++end) result.walls.push_back(sideWallReport(scene, sideWalls, end));
+    if (layers.front() < result.closestPair) {  // the first layer of material, dx/2 from z = 0
+      result.closestPair = layers.front();
+      result.closestPairKinds = "material-wall";
+    }
+  }
+  for (const SideWallParticle& p : sideWalls) {
+    const Vec3 x = T.point(p.position);
+    cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1, p.isWall ? ParticleKind::wall : ParticleKind::dummy,
+                    scene.sideWalls->patch[p.end], T.vector(p.normal), scene.sideWalls->density * dx * dx * dx);
+    result.walls[firstSide + static_cast<std::size_t>(p.end)].bounds.extend(x);
   }
   return result;
 }

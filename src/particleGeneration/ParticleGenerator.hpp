@@ -4,9 +4,10 @@
 //  2. put each wall's material side on its left (materialSide, or auto: probe the regions),
 //  3. wall and dummy layers along every wall,
 //  4. remove material sites inside solids or within the clearance of a wall surface,
-//  5. fields: origId 0..N-1 (material by region, then walls), mass = ρ × site area (walls
-//     ρ_wall dx²), U, kind, material, patch, normal,
-//  6. transform scene -> case frame, then the initial pressure (lithostatic along g).
+//  5. a 3D scene: the section repeated along z, and its side walls (Extrusion.hpp),
+//  6. fields: origId 0..N-1 (material by region, then walls, then side walls), mass = ρ × site
+//     area (walls ρ_wall dx²; in 3D times dx), U, kind, material, patch, normal, the initial
+//     pressure (lithostatic along g), all transformed from the scene frame to the case frame.
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,8 +26,8 @@ struct RegionReport {
   std::vector<std::pair<std::string, long>> lostTo;  // to earlier regions (non-zero only)
   long inSolid = 0, nearWall = 0;                    // removed by walls
   long particles = 0;
-  double geometricArea = 0, particleArea = 0;  // [m²] per unit width
-  double mass = 0;                             // [kg] per unit width
+  double geometricArea = 0, particleArea = 0;  // [m²] per unit width; 3D: volumes [m³]
+  double mass = 0;                             // [kg] per unit width; 3D: [kg]
   BoundingBox bounds;                          // of its particles, case frame
 };
 

@@ -3,6 +3,7 @@
 // system/particleMeshDict describes it (see SceneReader.hpp) or as code builds it (tests,
 // benchmarks). Coordinates are those of the scene frame; `transform` maps them to the case.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,12 +37,22 @@ struct WallSpec {
   SourceLocation where;
 };
 
+// `dimension 3;`: walls at z = 0 and z = width (`sideWalls` in particleMeshDict), the ends of
+// the extruded scene (Extrusion.hpp).
+struct SideWallSpec {
+  label patch[2] = {0, 0};  // indices into Scene::patches: the wall at z = 0, at z = width
+  double density = 0;    // mass of a wall or dummy particle = density dx³
+  SourceLocation where;  // the sideWalls entry
+};
+
 struct Scene {
   double spacing = 0;  // dx [m]
   double maxParticles = 1e7;  // refused above (ParticleEstimate.hpp): a spacing typo, not a scene
   SourceLocation spacingWhere, maxParticlesWhere;  // the entries (for errors); unknown if built by code
   std::string cloudName = "particles";
-  int dimension = 2;
+  int dimension = 2;  // 3: the x-y scene extruded along z over 0 <= z <= width (Extrusion.hpp)
+  double width = 0;   // 3D: the extent in z [m] (whole spacings: round(width / dx) layers)
+  std::optional<SideWallSpec> sideWalls;  // 3D: walls closing the ends z = 0 and z = width
   LatticeType lattice = LatticeType::square;
   Vec2 latticeOrigin = Vec2::Zero();
   int wallLayers = 3;          // wall layer + dummy layers

@@ -49,14 +49,30 @@ void readLattice(const Dictionary& dict, std::optional<double> spacing, Scene& s
   if (const Entry* e = dict.findEntry("maxParticles")) scene.maxParticlesWhere = e->location();
   scene.cloudName = dict.getOrDefault<std::string>("cloud", "particles");
   scene.dimension = dict.getOrDefault<int>("dimension", 2);
-  if (scene.dimension != 2) {
+  if (scene.dimension != 2 && scene.dimension != 3) {
     invalid(dict, "dimension",
-            fmt::format("only 2 (plane strain in x-y) is available, found {}", scene.dimension));
+            fmt::format("expected 2 (plane strain in x-y) or 3 (the x-y scene extruded along z "
+                        "over `width`), found {}",
+                        scene.dimension));
   }
   scene.lattice =
       dict.getChoiceOrDefault("lattice", {"square", "hexagonal"}, "square") == "hexagonal"
           ? LatticeType::hexagonal
           : LatticeType::square;
+  if (scene.dimension == 3) {
+    if (!dict.found("width"))
+      invalid(dict, "dimension", "a 3D scene needs `width`, its extent in z [m] (width 0.2;)");
+    scene.width = dict.get<double>("width");
+    if (!(scene.width >= scene.spacing)) {
+      invalid(dict, "width",
+              fmt::format("the scene's extent in z must be at least one spacing ({} m), found {}",
+                          scene.spacing, scene.width));
+    }
+    if (scene.lattice != LatticeType::square)
+      invalid(dict, "lattice", "a 3D scene is filled on the cubic lattice: lattice square");
+  } else if (dict.found("width")) {
+    invalid(dict, "width", "is the extent in z of a 3D scene: it needs dimension 3");
+  }
   scene.latticeOrigin = toVec2(dict.getOrDefault<Vec3>("latticeOrigin", Vec3::Zero()));
   scene.wallClearance = dict.getOrDefault("wallClearance", 0.5);
   if (!(scene.wallClearance >= 0 && scene.wallClearance <= 2)) {
@@ -89,14 +105,17 @@ void readWallLayers(const Dictionary& dict, const std::filesystem::path& caseDir
   }
 }
 
+// The optional sub-dictionary `key`: null when absent, an error when not a dictionary.
+const Dictionary* optionalSubDict(const Dictionary& dict, std::string_view key, const char* example) {
+  const Dictionary* d = dict.findDict(key);
+  dict.markRead(key);
+  if (!d && dict.found(key)) invalid(dict, key, fmt::format("expected a sub-dictionary {}", example));
+  return d;
+}
+
 void readTransform(const Dictionary& dict, Scene& scene) {
-  const Dictionary* t = dict.findDict("transform");
-  dict.markRead("transform");
-  if (!t) {
-    if (dict.found("transform"))
-      invalid(dict, "transform", "expected a sub-dictionary { rotate 45; ... }");
-    return;
-  }
+  const Dictionary* t = optionalSubDict(dict, "transform", "{ rotate 45; ... }");
+  if (!t) return;
   const double angle = t->getOrDefault("rotate", 0.0);
   const Vec3 origin = t->getOrDefault<Vec3>("origin", Vec3::Zero());
   const Vec3 translate = t->getOrDefault<Vec3>("translate", Vec3::Zero());
@@ -210,6 +229,36 @@ void readWalls(const Dictionary& dict, const ShapeContext& context, Scene& scene
   }
 }
 
+void readSideWalls(const Dictionary& dict, Scene& scene) {
+  const Dictionary* d = optionalSubDict(dict, "sideWalls", "{ frictionAngle 25; }");
+  if (!d) return;
+  if (scene.dimension != 3) {
+    invalid(dict, "sideWalls",
+            "closes the ends z = 0 and z = width of a 3D scene: it needs dimension 3");
+  }
+  SideWallSpec s;
+  s.where = dict.findEntry("sideWalls")->location();
+  const double phi = d->get<double>("frictionAngle");
+  if (!(phi >= 0 && phi < 90))
+    invalid(*d, "frictionAngle", fmt::format("must be in [0, 90) degrees, found {}", phi));
+  warnIfImplausibleFrictionAngle(phi, "sideWalls: frictionAngle",
+                                 d->findEntry("frictionAngle")->location(), true);
+  if (d->found("patch") && d->found("patches"))
+    invalid(*d, "patches", "give one patch for both side walls (patch) or one each (patches), not both");
+  if (const auto names = d->getOptional<std::vector<std::string>>("patches")) {
+    if (names->size() != 2)
+      invalid(*d, "patches", fmt::format("expected two names, the wall at z = 0 and at z = width, found {}", names->size()));
+    for (int k = 0; k < 2; ++k) s.patch[k] = patchLabel(scene, (*names)[static_cast<std::size_t>(k)], phi, *d);
+  } else {
+    s.patch[0] = s.patch[1] = patchLabel(scene, d->getOrDefault<std::string>("patch", "sideWalls"), phi, *d);
+  }
+  s.density =
+      d->getOrDefault("rho", scene.regions.empty() ? 1000.0 : scene.regions.front().density);
+  if (!(s.density > 0)) invalid(*d, "rho", fmt::format("must be positive, found {}", s.density));
+  d->checkKeywords();
+  scene.sideWalls = s;
+}
+
 }  // namespace
 
 int kernelWallLayers(double supportRadius, double dx) {
@@ -227,6 +276,7 @@ Scene readScene(const std::filesystem::path& caseDir, std::optional<double> spac
   readInitialState(dict, caseDir, scene);
   readRegions(dict, caseDir, context, initialVelocity, scene);
   readWalls(dict, context, scene);
+  readSideWalls(dict, scene);
   dict.checkKeywords();
   return scene;
 }

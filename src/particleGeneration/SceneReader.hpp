@@ -1,13 +1,23 @@
 #pragma once
-// Reads the scene of a case from system/particleMeshDict (particleMesh's input). Coordinates
-// are (x y 0) in the scene frame (plane strain, z = 0); `transform` maps them to the case.
+// Reads the scene of a case from system/particleMeshDict (particleMesh's input). Shapes are
+// drawn in the x-y plane of the scene frame ((x y 0)); a 3D scene extrudes them along z over
+// its width; `transform` maps the scene frame to the case.
 //
 //   spacing         0.0036;      // dx [m]; required, > 0
 //   maxParticles    1e7;         // a scene estimated to make more is refused before any is
 //                                // made (ParticleEstimate.hpp); raise it for a larger one
 //   cloud           particles;   // the cloud's name: 0/lagrangian/<cloud>
-//   dimension       2;           // plane strain in x-y (3D is not available yet)
-//   lattice         square;      // square (dx²) | hexagonal ((√3/2) dx² per site)
+//   dimension       2;           // 2: plane strain in x-y | 3: the x-y scene extruded along z
+//   width           0.2;         // 3D only: z from 0 to width (round(width/dx) layers); regions
+//                                // and walls are x-y shapes that span it (Extrusion.hpp)
+//   sideWalls                    // 3D only, optional: walls at z = 0 and z = width
+//   {
+//       frictionAngle 25;        // required
+//       patch       sideWalls;   // both walls' patch (default sideWalls), or one each:
+//       patches     (front back); //   the wall at z = 0, then at z = width
+//       rho         1379;        // default: first region's rho
+//   }
+//   lattice         square;      // square (dx²) | hexagonal ((√3/2) dx² per site; 2D only)
 //   latticeOrigin   (0 0 0);     // a corner of a lattice cell: sites at origin + (i+½, j+½) cells
 //   wallLayers      3;           // wall + dummy layers; default ceil(kernel support / dx) from
 //                                // system/isphSchemes (kernel WendlandC2, hOverDx 1.3 -> 3)

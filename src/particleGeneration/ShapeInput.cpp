@@ -46,7 +46,7 @@ PointList readPoints(const Dictionary& dict, const std::string& key, const Shape
   for (const Vec3& p : points) {
     if (p.z() != 0.0) {
       fatalIOError(inlineEntry->location(),
-                   fmt::format("keyword '{}' in dictionary {}: z must be 0 in a 2D scene, found "
+                   fmt::format("keyword '{}' in dictionary {}: z must be 0: shapes are drawn in the x-y plane (a 3D scene extrudes them along z), found "
                                "({} {} {})",
                                key, dict.name(), p.x(), p.y(), p.z()));
     }
@@ -71,7 +71,7 @@ Vec2 readPoint2D(const Dictionary& dict, const std::string& key) {
   const Vec3 p = dict.get<Vec3>(key);
   if (p.z() != 0.0) {
     fatalIOError(dict.findEntry(key)->location(),
-                 fmt::format("keyword '{}' in dictionary {}: z must be 0 in a 2D scene, found {}",
+                 fmt::format("keyword '{}' in dictionary {}: z must be 0: shapes are drawn in the x-y plane (a 3D scene extrudes them along z), found {}",
                              key, dict.name(), p.z()));
   }
   return toVec2(p);

@@ -27,7 +27,7 @@ struct PointList {
 // Whether `key` or `keyFile` is present.
 bool hasPoints(const Dictionary& dict, const std::string& key);
 
-// Points written inline, `key ((x y 0) (x y 0) ...);` (z must be 0 in a 2D scene), or read
+// Points written inline, `key ((x y 0) (x y 0) ...);` (z must be 0: shapes are drawn in x-y), or read
 // from a CSV file, `keyFile "constant/ground.csv";` (relative to the case). Exactly one of
 // the two must be given.
 PointList readPoints(const Dictionary& dict, const std::string& key, const ShapeContext& context);

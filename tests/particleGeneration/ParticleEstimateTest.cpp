@@ -34,6 +34,22 @@ TEST(ParticleEstimate, CloseToWhatTheGenerationMakes) {
   EXPECT_GE(e.tested, e.material);
 }
 
+// In 3D the section's counts times the layers along z, and the side walls over the walls' box
+// (reached by the dummies): measured 4.4 % high here (28,470 for 27,258: the side walls drop
+// the sites deeper than their layers behind the tank's corners); 94,808 made for 96,000 on the
+// 3D tutorial tank.
+TEST(ParticleEstimate, ThreeDimensionalSceneCloseToWhatTheGenerationMakes) {
+  Scene s = tank(0.02);
+  s.dimension = 3;
+  s.width = 0.3;
+  s.patches.push_back({"sides", 0.0});
+  s.sideWalls = SideWallSpec{.patch = {1, 1}, .density = 1000, .where = {}};
+  const ParticleEstimate e = estimateParticles(s);
+  const GenerationResult r = generateParticles(s);
+  const auto n = static_cast<double>(r.cloud.size());
+  EXPECT_NEAR(e.particles() / n, 1.0, 0.05) << e.particles() << " estimated, " << n << " made";
+}
+
 TEST(ParticleEstimate, AboveTheLimitIsRefusedBeforeAnythingIsMade) {
   Scene s = tank(1e-7);  // 2.5e13 particles
   s.maxParticles = 1e7;

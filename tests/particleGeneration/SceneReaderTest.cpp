@@ -231,6 +231,42 @@ TEST_F(SceneReader, PointsMustLieInThePlane) {
   expectAt(e, "particleMeshDict", lineOf(dict, "points      ("));
 }
 
+// A 3D scene: the extent in z, square lattice, side walls; each misuse names its keyword.
+TEST_F(SceneReader, ThreeDimensionalScene) {
+  const std::string square = replaced(validDict, "lattice         hexagonal;", "lattice         square;");
+  c.write("system/particleMeshDict",
+          square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; patch sides; rho 2000; }\n");
+  const Scene s = readScene(c.path());
+  EXPECT_EQ(s.dimension, 3);
+  EXPECT_DOUBLE_EQ(s.width, 0.2);
+  ASSERT_TRUE(s.sideWalls);
+  EXPECT_EQ(s.sideWalls->patch[0], s.sideWalls->patch[1]);
+  EXPECT_EQ(s.patches.at(static_cast<std::size_t>(s.sideWalls->patch[0])).name, "sides");
+  EXPECT_DOUBLE_EQ(s.patches.at(static_cast<std::size_t>(s.sideWalls->patch[0])).frictionAngle, 10);
+  EXPECT_DOUBLE_EQ(s.sideWalls->density, 2000);
+
+  c.write("system/particleMeshDict",
+          square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; patches (front back); }\n");
+  const Scene two = readScene(c.path());
+  EXPECT_EQ(two.patches.at(static_cast<std::size_t>(two.sideWalls->patch[0])).name, "front");
+  EXPECT_EQ(two.patches.at(static_cast<std::size_t>(two.sideWalls->patch[1])).name, "back");
+
+  const auto errorAt = [&](const std::string& dict, const std::string& keyword, const std::string& says) {
+    const FatalError e = sceneError(c, dict);
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    expectAt(e, "particleMeshDict", lineOf(dict, keyword));
+  };
+  errorAt(square + "dimension 4;\n", "dimension 4", "expected 2 (plane strain in x-y) or 3");
+  errorAt(square + "dimension 3;\n", "dimension 3", "width");  // no width: at the dictionary
+  errorAt(square + "dimension 3;\nwidth 0.001;\n", "width 0.001", "at least one spacing");
+  errorAt(square + "width 0.2;\n", "width 0.2", "needs dimension 3");
+  errorAt(square + "sideWalls { frictionAngle 10; }\n", "sideWalls", "needs dimension 3");
+  errorAt(std::string(validDict) + "dimension 3;\nwidth 0.2;\n", "lattice         hexagonal", "lattice square");
+  errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngel 10; }\n", "sideWalls", "frictionAngle");
+  errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; patches (front); }\n", "sideWalls",
+          "expected two names");
+}
+
 const std::string profileDict = R"(spacing 0.1;
 regions
 {

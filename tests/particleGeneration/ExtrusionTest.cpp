@@ -1,0 +1,124 @@
+// A 3D scene is its x-y section extruded along z (Extrusion.hpp): an open tank of water 0.4 ×
+// 0.3 m, walls left, right and below, 0.2 m wide, at dx = 0.05 (4 layers). Checked against
+// the 2D scene of the same section: every layer holds the section's particles, masses are
+// ρ dx³, the side walls close the ends with wall particles facing the material and dummies
+// behind. (That they hold water at rest with the exact pressure and wall force is the
+// tutorial hydrostaticTank3D's check.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "SceneTestHelpers.hpp"
+#include "geometry/Box.hpp"
+#include "particleGeneration/Extrusion.hpp"
+
+namespace isph {
+namespace {
+
+using test::addRegion;
+using test::addWall;
+using test::countKind;
+using test::emptyScene;
+
+constexpr double dx = 0.05, rho = 1000;
+
+Scene tank(int dimension, bool sideWalls) {
+  Scene s = emptyScene(dx);
+  s.dimension = dimension;
+  s.width = dimension == 3 ? 0.2 : 0.0;
+  s.initialPressure = InitialPressure::lithostatic;
+  s.gravity = Vec3(0, -9.81, 0);
+  addRegion(s, "water", std::make_unique<Box>(Vec2(0, 0), Vec2(0.4, 0.3)), rho);
+  addWall(s, "left", {{0, 0.4}, {0, 0}});
+  addWall(s, "right", {{0.4, 0}, {0.4, 0.4}});
+  addWall(s, "bottom", {{0, 0}, {0.4, 0}});
+  if (sideWalls) {
+    s.patches.push_back({"sides", 25.0});
+    s.sideWalls = SideWallSpec{.patch = {1, 1}, .density = rho, .where = {}};
+  }
+  return s;
+}
+
+std::vector<std::size_t> ofKind(const ParticleCloud& c, ParticleKind k) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (c.kind[i] == static_cast<label>(k)) out.push_back(i);
+  return out;
+}
+
+// x-y positions (rounded to 1e-9 m) of the particles of one kind and patch in a cloud.
+std::multiset<std::pair<long, long>> section(const ParticleCloud& c, ParticleKind k, double z) {
+  std::multiset<std::pair<long, long>> out;
+  for (std::size_t i : ofKind(c, k)) {
+    if (c.patch[i] == 1 || std::abs(c.positions[i].z() - z) > 1e-12) continue;
+    out.emplace(std::lround(c.positions[i].x() * 1e9), std::lround(c.positions[i].y() * 1e9));
+  }
+  return out;
+}
+
+TEST(Extrusion, EveryLayerHoldsTheSection) {
+  const GenerationResult flat = generateParticles(tank(2, false));
+  const GenerationResult slab = generateParticles(tank(3, true));
+  EXPECT_EQ(slab.cloud.properties.dimension, 3);
+  const std::vector<double> layers = extrusionLayers(tank(3, true));
+  ASSERT_EQ(layers.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(layers[k], (k + 0.5) * dx, 1e-15);
+  const std::size_t nFlat = ofKind(flat.cloud, ParticleKind::material).size();
+  ASSERT_EQ(ofKind(slab.cloud, ParticleKind::material).size(), 4 * nFlat);
+  for (const double z : extrusionLayers(tank(3, true))) {
+    for (const ParticleKind k : {ParticleKind::material, ParticleKind::wall, ParticleKind::dummy})
+      EXPECT_EQ(section(slab.cloud, k, z), section(flat.cloud, k, 0.0)) << "z = " << z;
+  }
+  // Material: ρ dx³ each, ρ V in all, p = ρ g (H - y) as in 2D.
+  double mass = 0;
+  for (std::size_t i : ofKind(slab.cloud, ParticleKind::material)) {
+    EXPECT_DOUBLE_EQ(slab.cloud.mass[i], rho * dx * dx * dx);
+    EXPECT_NEAR(slab.cloud.p[i], rho * 9.81 * (0.3 - slab.cloud.positions[i].y()), 1e-9);
+    mass += slab.cloud.mass[i];
+  }
+  EXPECT_NEAR(mass, rho * 0.4 * 0.3 * 0.2, 1e-9);
+  EXPECT_NEAR(slab.regions[0].mass, rho * 0.4 * 0.3 * 0.2, 1e-9);
+  for (std::size_t i : ofKind(slab.cloud, ParticleKind::wall)) {
+    if (slab.cloud.patch[i] != 1) EXPECT_EQ(slab.cloud.normal[i].z(), 0.0);
+    EXPECT_DOUBLE_EQ(slab.cloud.mass[i], rho * dx * dx * dx);
+  }
+}
+
+TEST(Extrusion, SideWallsCloseTheEnds) {
+  const Scene scene = tank(3, true);
+  const GenerationResult r = generateParticles(scene);
+  const ParticleCloud& c = r.cloud;
+  long walls[2] = {0, 0};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c.patch[i] != 1) continue;
+    const Vec3& x = c.positions[i];
+    const bool near = x.z() < 0.1;
+    const double depth = near ? -x.z() : x.z() - 0.2;  // behind the side wall's surface
+    EXPECT_GE(depth, -1e-12) << "side-wall particle in the material's span";
+    EXPECT_LT(depth, scene.wallLayers * dx);
+    const bool inSection = x.x() > 0 && x.x() < 0.4 && x.y() > 0;
+    if (c.kind[i] == static_cast<label>(ParticleKind::wall)) {
+      ++walls[near ? 0 : 1];
+      EXPECT_NEAR(depth, 0.0, 1e-12);
+      EXPECT_EQ(c.normal[i], Vec3(0, 0, near ? 1 : -1));
+      EXPECT_TRUE(inSection) << "a side-wall surface particle behind the tank's walls";
+    } else {
+      EXPECT_TRUE(depth > 0.5 * dx || !inSection);
+    }
+  }
+  // One wall particle per lattice site of the tank's inside, at each end (up to the walls'
+  // top at 0.4 m: 8 columns, 8 rows).
+  EXPECT_EQ(walls[0], 64);
+  EXPECT_EQ(walls[1], 64);
+  EXPECT_DOUBLE_EQ(r.closestPair, 0.5 * dx);
+
+  // Without side walls the ends are open: nothing beyond 0 <= z <= width.
+  for (const Vec3& x : generateParticles(tank(3, false)).cloud.positions) {
+    EXPECT_GT(x.z(), 0.0);
+    EXPECT_LT(x.z(), 0.2);
+  }
+}
+
+}  // namespace
+}  // namespace isph
