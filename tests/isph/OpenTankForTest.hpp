@@ -93,12 +93,14 @@ struct OpenTank {
 
   // The same tank in three dimensions, n3 particles along each side (z the second horizontal
   // direction): material particle (k n3 + j) n3 + i at ((i + ½) dx, (j + ½) dx, (k + ½) dx), the
-  // bed at y = 0 and four side walls at x = 0, x = n3 dx, z = 0, z = n3 dx up to y = (n3 + 1) dx,
+  // bed at y = 0 and four side walls at x = 0, x = n3 dx, z = 0, z = n3 dx up to y = (n3 + 1) dx
+  // (`layers` in z in place of n3: z = layers dx),
   // wall particles on the lattice of the walls' surfaces (edges and corners: the mean of their
   // faces' normals), dummies on that lattice behind them within 2 dx of the tank (the 3D
   // counterpart of the 2D tank's two layers and corner arcs).
   struct ThreeD {
     int n3 = 6;
+    int layers = 0;  // material particles along z (0: n3); 1 is a slab one spacing wide
   };
   explicit OpenTank(ThreeD three) : kernel(makeKernel("WendlandC2", 1.3 * dx, 3)) {
     materials = materialTable("openTank", "water { model newtonian; rho 1000; nu 1e-6; }", {"water"});
@@ -107,10 +109,10 @@ struct OpenTank {
     c.properties.patches = {{"tank", 0.0}};
     c.properties.spacing = dx;
     c.properties.dimension = 3;
-    const int m = three.n3, top = m + 1;
+    const int m = three.n3, mz = three.layers > 0 ? three.layers : m, top = m + 1;
     side = m;
     label id = 0;
-    for (int k = 0; k < m; ++k)
+    for (int k = 0; k < mz; ++k)
       for (int j = 0; j < m; ++j)
         for (int i = 0; i < m; ++i)
           c.push_back(Vec3((i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx), id++, Vec3::Zero(), 0.0, 0,
@@ -118,17 +120,17 @@ struct OpenTank {
     // Lattice sites (i, j, k) dx: on the tank's surface a wall particle, outside it within 2 dx
     // a dummy (the walls first: the particle system orders material, wall, dummy).
     auto outside = [&](int i, int j, int k) {  // distance outside the box, in dx
-      const double ox = std::max({0, -i, i - m}), oy = std::max(0, -j), oz = std::max({0, -k, k - m});
+      const double ox = std::max({0, -i, i - m}), oy = std::max(0, -j), oz = std::max({0, -k, k - mz});
       return std::sqrt(ox * ox + oy * oy + oz * oz);
     };
     for (const bool walls : {true, false}) {
-      for (int k = -2; k <= m + 2; ++k)
+      for (int k = -2; k <= mz + 2; ++k)
         for (int j = -2; j <= top; ++j)
           for (int i = -2; i <= m + 2; ++i) {
             const Vec3 x(i * dx, j * dx, k * dx);
-            const bool onSurface = outside(i, j, k) == 0 && (i == 0 || i == m || k == 0 || k == m || j == 0);
+            const bool onSurface = outside(i, j, k) == 0 && (i == 0 || i == m || k == 0 || k == mz || j == 0);
             if (walls && onSurface) {
-              const Vec3 normal = Vec3(i == 0 ? 1 : i == m ? -1 : 0, j == 0 ? 1 : 0, k == 0 ? 1 : k == m ? -1 : 0).normalized();
+              const Vec3 normal = Vec3(i == 0 ? 1 : i == m ? -1 : 0, j == 0 ? 1 : 0, k == 0 ? 1 : k == mz ? -1 : 0).normalized();
               c.push_back(x, id++, Vec3::Zero(), 0.0, -1, ParticleKind::wall, 0, normal, 0);
             } else if (!walls && outside(i, j, k) > 0 && outside(i, j, k) <= 2 + 1e-9) {
               c.push_back(x, id++, Vec3::Zero(), 0.0, -1, ParticleKind::dummy, 0, Vec3::Zero(), 0);
@@ -136,7 +138,7 @@ struct OpenTank {
           }
     }
     finish();
-    for (int k = 0; k < m; ++k)
+    for (int k = 0; k < mz; ++k)
       for (int i = 0; i < m; ++i) surface[static_cast<std::size_t>((k * m + m - 1) * m + i)] = 1;
   }
 

@@ -60,9 +60,20 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
       // 2D scan's counterpart: the waterline against a wall), or the colour gradient confirmed
       // by a probe region empty of particles of any kind (Marrone et al. 2010, with the walls
       // filling the support: material half a spacing from a wall has its gradient into it).
+      // Seen from material, a wall or dummy particle fills its direction only where that
+      // direction's axis points into its wall: a side wall standing above the water lies in
+      // the surface particles' upward cone (two rows up, 14° off the axis) but does not close
+      // it (doc/notes/threeD.md: a slab one spacing wide found no surface at all).
       std::uint32_t occupied = 0;
       for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
-        occupied |= 1u << latticeDirection(x[static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)])] - x[ua]);
+        const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+        const int direction = latticeDirection(x[b] - x[ua]);
+        if (ps.isMaterial(ua) && !ps.isMaterial(b)) {
+          const Vec3& n = ps.isWall(b) ? ps.cloud.normal[b] : ps.cloud.normal[static_cast<std::size_t>(ps.parentWall[b])];
+          const Vec3 axis(direction % 3 - 1, direction / 3 % 3 - 1, direction / 9 - 1);
+          if (axis.dot(n) > -1e-9) continue;
+        }
+        occupied |= 1u << direction;
       }
       isSurface = occupied != allLatticeDirections;
       if (!isSurface && gradC.norm() * h_ > gradientThreshold_) {

@@ -10,8 +10,11 @@
 //    part of the missing support and lift ∇·r over 1.5, without flagging material crowded
 //    against a wall (particleMesh leaves it half a spacing from the wall particles), which
 //    a colour-gradient test |∇C| h > threshold takes for a surface and so pins p = 0 inside.
-//  - 3D: one of the 26 lattice directions of its support holds no particle of any kind (the
-//    2D scan's counterpart), or |∇C| h is above its threshold, confirmed by a probe at
+//  - 3D: one of the 26 lattice directions of its support holds no particle (the 2D scan's
+//    counterpart; a wall or dummy particle fills a direction of a material particle only
+//    where the direction's axis points into its wall, so that a side wall beside the
+//    water's surface does not close the way up), or |∇C| h is above its
+//    threshold, confirmed by a probe at
 //    x_a + h n, n = −∇C/|∇C|, with no particle of any kind within h (a simplified scan of
 //    Marrone et al. 2010; walls fill the support as in the 2D scan, or material against a
 //    wall would be taken for a surface).
