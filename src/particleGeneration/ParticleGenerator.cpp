@@ -84,8 +84,7 @@ WallReport sideWallReport(const Scene& scene, const std::vector<SideWallParticle
   report.name = end == 0 ? "sideWall0" : "sideWall1";
   report.patch = scene.patches.at(patch).name;
   report.type = "side";
-  report.side = fmt::format("z > {:.6g} (3D)", end == 0 ? 0.0 : width);
-  if (end == 1) report.side = fmt::format("z < {:.6g} (3D)", width);
+  report.side = end == 0 ? std::string("z > 0 (3D)") : fmt::format("z < {:.6g} (3D)", width);
   report.frictionAngle = scene.patches[patch].frictionAngle;
   for (const SideWallParticle& p : particles) {
     if (p.end == end) ++(p.isWall ? report.stats.wallParticles : report.stats.dummyParticles);
