@@ -42,15 +42,13 @@ MaterialSideOfWalls::Verdict MaterialSideOfWalls::classify(const Vec3& x) const 
 
   std::vector<long> around = tree_.within(w.position, neighbourReach * dx_);
   std::erase(around, v.wall);
-  // The pair of most different normals among w and its neighbours.
-  long a = v.wall, b = v.wall;
+  // The most different normals among w and its neighbours.
   double lowest = 1;
   around.push_back(v.wall);
   for (std::size_t i = 0; i < around.size(); ++i) {
     for (std::size_t j = i + 1; j < around.size(); ++j) {
-      const double c = walls_[static_cast<std::size_t>(around[i])].normal.dot(
-          walls_[static_cast<std::size_t>(around[j])].normal);
-      if (c < lowest) lowest = c, a = around[i], b = around[j];
+      lowest = std::min(lowest, walls_[static_cast<std::size_t>(around[i])].normal.dot(
+                                    walls_[static_cast<std::size_t>(around[j])].normal));
     }
   }
   around.pop_back();
@@ -73,17 +71,23 @@ MaterialSideOfWalls::Verdict MaterialSideOfWalls::classify(const Vec3& x) const 
     return v;
   }
 
-  // A corner: the wedge between the walls (intersection) or all but the solid's corner (union).
-  const WallPoint& pa = walls_[static_cast<std::size_t>(a)];
-  const WallPoint& pb = walls_[static_cast<std::size_t>(b)];
-  const bool wedge = (pb.position - pa.position).dot(pa.normal - pb.normal) > 0;
-  around.push_back(v.wall);
-  double depth = wedge ? 1e300 : -1e300;
+  // A corner. Each neighbour p meets w either in a wedge (each in front of the other, a tank's
+  // corner: the material is in front of both) or at a solid's corner (in front of either). In
+  // 3D both at once: the top of a block beside a side wall (a wedge) at the block's edge (a
+  // solid's corner). So: in front of w or of a neighbour at a solid's corner with it, and in
+  // front of every neighbour in a wedge with it. "In front of each other" by more than the
+  // tolerance: a side wall's particle above a block's edge and the block's face particle
+  // below it, dx/2 from each other's planes, are neither (exactly 0: round-off decided).
+  double solidCorner = v.depth, wedge = 1e300;
   for (long n : around) {
     const WallPoint& p = walls_[static_cast<std::size_t>(n)];
     const double d = (x - p.position).dot(p.normal);
-    depth = wedge ? std::min(depth, d) : std::max(depth, d);
+    if ((p.position - w.position).dot(w.normal - p.normal) > tolerance())
+      wedge = std::min(wedge, d);
+    else
+      solidCorner = std::max(solidCorner, d);
   }
+  const double depth = std::min(solidCorner, wedge);
   v.depth = depth;
   if (depth < -tolerance()) v.side = Side::behindWall;
   return v;

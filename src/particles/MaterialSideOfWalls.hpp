@@ -8,13 +8,15 @@
 // The test: the nearest wall particle w (a PointTree over the wall particles) and the wall
 // particles within 1.6 dx of it (its neighbours along the wall). The depth is (x - x_w)·n_w,
 // positive on the material side. Two subtleties:
-//  - a corner (the neighbours' normals differ): the depth is that of every neighbour's
-//    half-plane, the smallest where the material side is the wedge between the two walls (a
-//    tank's corner: in the material only if in front of both), the largest where it is the
-//    rest (the corner of a solid block: in front of either is enough). Which one: the pair of
-//    most different normals a, b; (x_b - x_a)·(n_a - n_b) > 0 when each lies in front of the
-//    other, the tank's corner. With the corner particle's normal alone, a point below the
-//    tank's bed beside its corner was taken for water;
+//  - a corner (the neighbours' normals differ): each neighbour p meets w in a wedge, when each
+//    lies in front of the other ((x_p - x_w)·(n_w - n_p) > 0.1 dx: a tank's corner, where the
+//    material is in front of both), or at a solid's corner (the edge of a block, where in
+//    front of either is enough). The depth is the largest of w's and its solid-corner
+//    neighbours', capped by the smallest of its wedge neighbours'. In 3D both meet at one
+//    point: the top of a block beside a side wall (a wedge) at the block's edge (a solid's
+//    corner); one rule for the whole neighbourhood took the block's side face for a wedge and
+//    put the water above the block behind it. With the corner particle's normal alone, a
+//    point below the tank's bed beside its corner was taken for water;
 //  - an open end (one neighbour, or all on one side with the same normal): a point behind
 //    the end particle's half-plane and past the end along the wall is `pastOpenEnd`.
 // A point counts as on the solid side when its depth is below -0.1 dx (wall particles sample

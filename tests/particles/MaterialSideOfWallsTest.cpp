@@ -8,6 +8,11 @@
 //  - the corner subtlety: a point below the bed a tenth of dx right of the corner has the
 //    corner particle nearest, whose normal (1 0) alone calls it water;
 //  - a solid block (material all round): beside its corners is material, inside it is behind;
+//  - the same block in 3D (its section extruded at z = (k + 1/2) dx) standing against a side
+//    wall at z = 0 (wall particles on the material's lattice outside the block, as particleMesh
+//    puts them): water above the block by the side wall is material, as are the points beside
+//    its faces; inside it and behind the side wall is behind (before, the block's side face
+//    was taken for a wedge with the side wall and the water above the block was behind);
 //  - ofCloud takes the wall particles only (a dummy behind the wall is not a wall).
 #include "particles/MaterialSideOfWalls.hpp"
 
@@ -90,6 +95,36 @@ TEST(MaterialSideOfWalls, BesideASolidBlocksCornersIsMaterialInsideItIsBehind) {
   EXPECT_EQ(sideOf(s, 0.1 + 0.3 * dx, 0.1 - 1.2 * dx), Side::behindWall);  // in the block, by its corner
   EXPECT_EQ(sideOf(s, 0.15, 0.05), Side::behindWall);
   EXPECT_EQ(sideOf(s, 0.05, 0.5 * dx), Side::material);
+}
+
+TEST(MaterialSideOfWalls, AboveABlockBesideASideWallIsMaterial) {
+  std::vector<MaterialSideOfWalls::WallPoint> w;
+  for (int k = 0; k < 10; ++k) {
+    const double z = (k + 0.5) * dx;
+    for (int i = -10; i <= 40; ++i) {
+      if (i < 10 || i > 20) w.push_back({Vec3(i * dx, 0, z), Vec3(0, 1, 0), 0});
+    }
+    for (int j = 0; j <= 10; ++j) w.push_back({Vec3(0.1, j * dx, z), Vec3(-1, 0, 0), 1});
+    for (int i = 11; i <= 20; ++i) w.push_back({Vec3(i * dx, 0.1, z), Vec3(0, 1, 0), 1});
+    for (int j = 0; j < 10; ++j) w.push_back({Vec3(0.2, j * dx, z), Vec3(1, 0, 0), 1});
+  }
+  for (int i = -10; i < 40; ++i) {  // the side wall: sites above the bed, outside the block
+    for (int j = 0; j < 30; ++j) {
+      const double x = (i + 0.5) * dx, y = (j + 0.5) * dx;
+      if (x > 0.1 && x < 0.2 && y < 0.1) continue;
+      w.push_back({Vec3(x, y, 0), Vec3(0, 0, 1), 2});
+    }
+  }
+  const MaterialSideOfWalls s(std::move(w), dx);
+  const auto at = [&](double x, double y, double z) { return s.classify(Vec3(x, y, z)).side; };
+  for (const double x : {0.1 + 0.5 * dx, 0.1 + 1.5 * dx, 0.15, 0.2 - 0.5 * dx}) {
+    EXPECT_EQ(at(x, 0.1 + dx, 0.5 * dx), Side::material) << "above the block by the side wall, x = " << x;
+    EXPECT_EQ(at(x, 0.05, 0.5 * dx), Side::behindWall) << "in the block by the side wall, x = " << x;
+  }
+  EXPECT_EQ(at(0.1 - 0.5 * dx, 0.05, 0.5 * dx), Side::material);  // beside its faces
+  EXPECT_EQ(at(0.2 + 0.5 * dx, 0.1 + 0.5 * dx, 0.5 * dx), Side::material);
+  EXPECT_EQ(at(0.15, 0.1 + dx, -0.5 * dx), Side::behindWall);   // behind the side wall
+  EXPECT_EQ(at(0.05, 0.05, -0.5 * dx), Side::behindWall);
 }
 
 TEST(MaterialSideOfWalls, OfCloudTakesTheWallParticlesNotTheDummies) {
