@@ -6,14 +6,17 @@
 #include <cmath>
 
 #include "core/io/ReadFile.hpp"
+#include "particleGeneration/Extrusion.hpp"
+#include "particleGeneration/ZSlabs.hpp"
 
 namespace isph {
 
 ParticleEstimate estimateParticles(const Scene& scene) {
   const Lattice lattice(scene.lattice, scene.spacing, scene.latticeOrigin);
   ParticleEstimate e;
+  const bool threeD = scene.dimension == 3;  // the section repeated along z (Extrusion.hpp)
   for (const RegionSpec& r : scene.regions) {
-    e.material += r.shape->measure() / lattice.siteArea();
+    e.material += r.shape->measure() / lattice.siteArea() * (threeD ? static_cast<double>(layersIn(scene, r.zRange)) : 1.0);
     const BoundingBox box = r.shape->boundingBox();
     if (box.empty()) continue;
     // Lattice::range's columns and rows, in floating point (no overflow for any spacing).
@@ -22,13 +25,11 @@ ParticleEstimate estimateParticles(const Scene& scene) {
   }
   BoundingBox walls;
   for (const WallSpec& w : scene.walls) {
-    e.walls += (w.surface->chain().length() / scene.spacing + 1) * scene.wallLayers;
+    e.walls += (w.surface->chain().length() / scene.spacing + 1) * scene.wallLayers *
+               (threeD ? static_cast<double>(extrusionLayers(scene).size()) : 1.0);
     walls.extend(w.surface->boundingBox().inflated((scene.wallLayers - 1) * scene.spacing));  // the dummies' reach
   }
-  if (scene.dimension == 3) {  // the section repeated along z, and its side walls (Extrusion.hpp)
-    const double layers = std::max(1.0, std::round(scene.width / scene.spacing));
-    e.material *= layers;
-    e.walls *= layers;
+  if (threeD) {  // the side walls
     if (scene.sideWalls && !walls.empty())
       e.walls += 2.0 * scene.wallLayers * (walls.size().x() / scene.spacing + 1) * (walls.size().y() / scene.spacing + 1);
   }

@@ -12,15 +12,16 @@
 #include "particleGeneration/SpatialHash.hpp"
 #include "particleGeneration/WallClearance.hpp"
 #include "particleGeneration/WallOrientation.hpp"
+#include "particleGeneration/ZSlabs.hpp"
 
 namespace isph {
 
 namespace {
 
-void checkRegionsHoldSites(const Scene& scene, const std::vector<RegionSites>& sites,
+void checkRegionsHoldSites(const Scene& scene, const std::vector<RegionReport>& reports,
                            const Lattice& lattice) {
-  for (std::size_t r = 0; r < sites.size(); ++r) {
-    if (sites[r].inside > 0) continue;
+  for (std::size_t r = 0; r < reports.size(); ++r) {
+    if (reports[r].inside > 0) continue;
     const RegionSpec& region = scene.regions[r];
     fatalIOError(
         region.where,
@@ -68,10 +69,60 @@ void closestPair(const std::vector<Vec2>& material, const std::vector<double>& n
   }
 }
 
-// The section's extent (scene frame): its material sites, wall and dummy particles.
-BoundingBox sectionBounds(const std::vector<Vec2>& material, const std::vector<WallParticle>& walls) {
+// One slab's section (ZSlabs.hpp): the material sites of the regions present there, after
+// the walls removed theirs.
+struct Section {
+  std::vector<RegionSites> sites;       // by scene region (empty where absent)
+  std::vector<ClearanceCount> removed;  // by scene region
+  std::vector<Vec2> material;           // all kept sites, by region
+  std::vector<double> nearest;          // their distance to the nearest wall surface (capped at dx)
+  std::vector<double> pressure;         // their initial pressure
+};
+
+Section buildSection(const Scene& scene, const ZSlab& slab, const std::vector<WallSurface>& walls,
+                     const Lattice& lattice) {
+  const double dx = scene.spacing;
+  const std::size_t nRegions = scene.regions.size();
+  std::vector<const Region*> shapes;
+  std::vector<std::size_t> regionOf;  // present region -> scene region
+  for (std::size_t r = 0; r < nRegions; ++r) {
+    if (!slab.regions[r]) continue;
+    shapes.push_back(scene.regions[r].shape.get());
+    regionOf.push_back(r);
+  }
+  Section section;
+  section.sites.resize(nRegions);
+  section.removed.resize(nRegions);
+  std::vector<RegionSites> filled = fillRegions(shapes, lattice);
+  std::vector<double> nearest;
+  for (std::size_t q = 0; q < filled.size(); ++q) {
+    RegionSites& sites = section.sites[regionOf[q]];
+    sites.sites = std::move(filled[q].sites);
+    sites.inside = filled[q].inside;
+    sites.lostTo.assign(nRegions, 0);
+    for (std::size_t e = 0; e < q; ++e) sites.lostTo[regionOf[e]] = filled[q].lostTo[e];
+    section.removed[regionOf[q]] = removeBlockedSites(sites.sites, walls, scene.wallClearance * dx, nearest, dx);
+    section.material.insert(section.material.end(), sites.sites.begin(), sites.sites.end());
+    section.nearest.insert(section.nearest.end(), nearest.begin(), nearest.end());
+  }
+  section.pressure.assign(section.material.size(), 0.0);
+  if (scene.initialPressure == InitialPressure::lithostatic) {
+    std::vector<double> densities;
+    for (const std::size_t r : regionOf) densities.push_back(scene.regions[r].density);
+    const double g = scene.gravity.norm();
+    const Vec2 up = toVec2(scene.transform.inverseVector(-scene.gravity / g));
+    section.pressure = lithostaticPressure(section.material, shapes, densities, up, g);
+  }
+  return section;
+}
+
+// The extent of the section (scene frame): the material sites of every slab, the wall and
+// dummy particles.
+BoundingBox sectionBounds(const std::vector<Section>& sections, const std::vector<WallParticle>& walls) {
   BoundingBox box;
-  for (const Vec2& s : material) box.extend(toVec3(s));
+  for (const Section& s : sections) {
+    for (const Vec2& x : s.material) box.extend(toVec3(x));
+  }
   for (const WallParticle& w : walls) box.extend(toVec3(w.position));
   return box;
 }
@@ -93,6 +144,60 @@ WallReport sideWallReport(const Scene& scene, const std::vector<SideWallParticle
   return report;
 }
 
+// The regions' reports, summed over the slabs (3D: counts of particles, sites times layers).
+std::vector<RegionReport> regionReports(const Scene& scene, const std::vector<ZSlab>& slabs,
+                                        const std::vector<Section>& sections, const Lattice& lattice) {
+  const double depth = extrusionDepth(scene);
+  std::vector<RegionReport> reports;
+  for (std::size_t r = 0; r < scene.regions.size(); ++r) {
+    const RegionSpec& spec = scene.regions[r];
+    RegionReport report;
+    report.name = spec.name;
+    report.type = spec.shape->type();
+    report.material = scene.materials.at(static_cast<std::size_t>(spec.material));
+    report.density = spec.density;
+    std::vector<long> lost(scene.regions.size(), 0);
+    for (std::size_t s = 0; s < slabs.size(); ++s) {
+      if (!slabs[s].regions[r]) continue;
+      const long n = static_cast<long>(slabs[s].z.size());
+      const RegionSites& sites = sections[s].sites[r];
+      report.inside += sites.inside * n;
+      for (std::size_t q = 0; q < r; ++q) lost[q] += sites.lostTo[q] * n;
+      report.inSolid += sections[s].removed[r].inSolid * n;
+      report.nearWall += sections[s].removed[r].nearWall * n;
+      report.particles += static_cast<long>(sites.sites.size()) * n;
+    }
+    for (std::size_t q = 0; q < r; ++q) {
+      if (lost[q] > 0) report.lostTo.emplace_back(scene.regions[q].name, lost[q]);
+    }
+    report.geometricArea = spec.shape->measure() * depth * static_cast<double>(layersIn(scene, spec.zRange));
+    report.particleArea = static_cast<double>(report.particles) * lattice.siteArea() * depth;
+    report.mass = report.particleArea * spec.density;
+    reports.push_back(std::move(report));
+  }
+  return reports;
+}
+
+// The walls' reports (3D: the section's particles times the layers).
+std::vector<WallReport> wallReports(const Scene& scene, const std::vector<WallSurface>& walls,
+                                    const std::vector<WallSide>& sides, const WallLayerResult& layers) {
+  const auto n = static_cast<long>(extrusionLayers(scene).size());
+  std::vector<WallReport> reports;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    WallReport report;
+    report.name = scene.walls[w].name;
+    report.patch = scene.patches.at(static_cast<std::size_t>(scene.walls[w].patch)).name;
+    report.type = walls[w].type();
+    report.side = sideText(walls[w], sides[w]);
+    report.frictionAngle = scene.patches[static_cast<std::size_t>(scene.walls[w].patch)].frictionAngle;
+    report.stats = layers.stats[w];
+    report.stats.wallParticles *= n;
+    report.stats.dummyParticles *= n;
+    reports.push_back(std::move(report));
+  }
+  return reports;
+}
+
 }  // namespace
 
 GenerationResult generateParticles(const Scene& scene) {
@@ -103,72 +208,42 @@ GenerationResult generateParticles(const Scene& scene) {
 
   std::vector<const Region*> shapes;
   for (const RegionSpec& r : scene.regions) shapes.push_back(r.shape.get());
-  std::vector<RegionSites> sites;
+  std::vector<WallSide> sides;
+  const std::vector<WallSurface> walls =
+      orientWalls(scene.walls, shapes, dx, scene.wallLayers * dx, sides);
+
+  // A 3D scene repeats each slab's section along z (Extrusion.hpp, ZSlabs.hpp): one copy per
+  // layer, each particle standing for `depth` of width. A 2D scene is one slab at z = 0.
+  const std::vector<ZSlab> slabs = zSlabs(scene);
+  const double depth = extrusionDepth(scene);
+  std::vector<Section> sections;
   {
     const Building building(fmt::format("the material particles of {} region(s) at spacing {} m (about {:.3g} "
                                         "particles, {:.3g} lattice sites tested)",
                                         scene.regions.size(), dx, estimate.material, estimate.tested));
-    sites = fillRegions(shapes, lattice);
+    for (const ZSlab& slab : slabs) sections.push_back(buildSection(scene, slab, walls, lattice));
   }
-  checkRegionsHoldSites(scene, sites, lattice);
-
-  std::vector<WallSide> sides;
-  const std::vector<WallSurface> walls =
-      orientWalls(scene.walls, shapes, dx, scene.wallLayers * dx, sides);
+  GenerationResult result;
+  result.regions = regionReports(scene, slabs, sections, lattice);
+  checkRegionsHoldSites(scene, result.regions, lattice);
   const Building building(fmt::format("the particle cloud at spacing {} m (about {:.3g} particles: {:.3g} material, "
                                       "{:.3g} wall and dummy)",
                                       dx, estimate.particles(), estimate.material, estimate.walls));
   const WallLayerResult wallLayers = generateWallLayers(walls, scene.wallLayers, dx);
-
-  // A 3D scene repeats the section along z (Extrusion.hpp): one copy per layer, each particle
-  // standing for `depth` of width.
-  const std::vector<double> layers = extrusionLayers(scene);
-  const double depth = extrusionDepth(scene);
-  const double nLayers = static_cast<double>(layers.size());
-
-  GenerationResult result;
-  std::vector<Vec2> materialPositions;
-  std::vector<double> nearestSurface, allNearest;
-  for (std::size_t r = 0; r < sites.size(); ++r) {
-    const RegionSpec& spec = scene.regions[r];
-    RegionReport report;
-    report.name = spec.name;
-    report.type = spec.shape->type();
-    report.material = scene.materials.at(static_cast<std::size_t>(spec.material));
-    report.density = spec.density;
-    report.inside = sites[r].inside;
-    for (std::size_t q = 0; q < r; ++q) {
-      if (sites[r].lostTo[q] > 0)
-        report.lostTo.emplace_back(scene.regions[q].name, sites[r].lostTo[q]);
+  for (const Section& s : sections) {
+    GenerationResult slabPair;
+    closestPair(s.material, s.nearest, wallLayers.particles, dx, slabPair);
+    if (result.closestPairKinds.empty() || slabPair.closestPair < result.closestPair) {
+      result.closestPair = slabPair.closestPair;
+      result.closestPairKinds = slabPair.closestPairKinds;
     }
-    const ClearanceCount removed =
-        removeBlockedSites(sites[r].sites, walls, scene.wallClearance * dx, nearestSurface, dx);
-    report.inSolid = removed.inSolid;
-    report.nearWall = removed.nearWall;
-    report.particles = static_cast<long>(sites[r].sites.size() * layers.size());
-    report.geometricArea = spec.shape->measure() * depth * nLayers;
-    report.particleArea = static_cast<double>(report.particles) * lattice.siteArea() * depth;
-    report.mass = report.particleArea * spec.density;
-    result.regions.push_back(std::move(report));
-    materialPositions.insert(materialPositions.end(), sites[r].sites.begin(), sites[r].sites.end());
-    allNearest.insert(allNearest.end(), nearestSurface.begin(), nearestSurface.end());
-  }
-  closestPair(materialPositions, allNearest, wallLayers.particles, dx, result);
-
-  const Transform& T = scene.transform;
-  std::vector<double> pressure(materialPositions.size(), 0.0);  // of the section's sites
-  if (scene.initialPressure == InitialPressure::lithostatic) {
-    std::vector<double> densities;
-    for (const RegionSpec& r : scene.regions) densities.push_back(r.density);
-    const double g = scene.gravity.norm();
-    const Vec2 up = toVec2(T.inverseVector(-scene.gravity / g));
-    pressure = lithostaticPressure(materialPositions, shapes, densities, up, g);
   }
 
-  // The cloud: material particles by region (then layer), then wall and dummy particles by
-  // wall (then layer), then the side walls.
+  // The cloud: material particles by region (then slab, layer), then wall and dummy particles
+  // by layer (then wall), then the side walls.
   const std::vector<SideWallParticle> sideWalls =
-      sideWallParticles(scene, sectionBounds(materialPositions, wallLayers.particles), wallLayers.particles);
+      sideWallParticles(scene, sectionBounds(sections, wallLayers.particles), wallLayers.particles);
+  const std::vector<double> layers = extrusionLayers(scene);
   ParticleCloud& cloud = result.cloud;
   cloud.name = scene.cloudName;
   cloud.properties.materials = scene.materials;
@@ -176,44 +251,37 @@ GenerationResult generateParticles(const Scene& scene) {
   cloud.properties.dimension = scene.dimension;
   cloud.properties.spacing = dx;
   cloud.properties.lattice = toString(scene.lattice);
-  cloud.reserve((materialPositions.size() + wallLayers.particles.size()) * layers.size() + sideWalls.size());
+  std::size_t total = sideWalls.size() + wallLayers.particles.size() * layers.size();
+  for (std::size_t k = 0; k < slabs.size(); ++k) total += sections[k].material.size() * slabs[k].z.size();
+  cloud.reserve(total);
+  const Transform& T = scene.transform;
   const auto at = [&](const Vec2& s, double z) { return T.point(Vec3(s.x(), s.y(), z)); };
   label id = 0;
-  std::size_t site = 0;
-  for (std::size_t r = 0; r < sites.size(); ++r) {
+  std::vector<std::size_t> firstSite(slabs.size(), 0);  // of the region in each slab's section
+  for (std::size_t r = 0; r < scene.regions.size(); ++r) {
     const RegionSpec& spec = scene.regions[r];
     const double mass = spec.density * lattice.siteArea() * depth;
     const Vec3 U = T.vector(spec.initialVelocity);
-    for (const double z : layers) {
-      for (std::size_t s = 0; s < sites[r].sites.size(); ++s) {
-        const Vec3 x = at(sites[r].sites[s], z);
-        cloud.push_back(x, id++, U, pressure[site + s], spec.material, ParticleKind::material, -1, Vec3::Zero(),
-                        mass);
-        result.regions[r].bounds.extend(x);
+    for (std::size_t k = 0; k < slabs.size(); ++k) {
+      const std::vector<Vec2>& sites = sections[k].sites[r].sites;
+      for (const double z : slabs[k].z) {
+        for (std::size_t s = 0; s < sites.size(); ++s) {
+          const Vec3 x = at(sites[s], z);
+          cloud.push_back(x, id++, U, sections[k].pressure[firstSite[k] + s], spec.material, ParticleKind::material,
+                          -1, Vec3::Zero(), mass);
+          result.regions[r].bounds.extend(x);
+        }
       }
+      firstSite[k] += sites.size();
     }
-    site += sites[r].sites.size();
   }
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    WallReport report;
-    report.name = scene.walls[w].name;
-    report.patch = scene.patches.at(static_cast<std::size_t>(scene.walls[w].patch)).name;
-    report.type = walls[w].type();
-    report.side = sideText(walls[w], sides[w]);
-    report.frictionAngle =
-        scene.patches[static_cast<std::size_t>(scene.walls[w].patch)].frictionAngle;
-    report.stats = wallLayers.stats[w];
-    report.stats.wallParticles *= static_cast<long>(layers.size());
-    report.stats.dummyParticles *= static_cast<long>(layers.size());
-    result.walls.push_back(std::move(report));
-  }
+  result.walls = wallReports(scene, walls, sides, wallLayers);
   for (const double z : layers) {
     for (const WallParticle& p : wallLayers.particles) {
       const WallSpec& spec = scene.walls[static_cast<std::size_t>(p.wall)];
       const Vec3 x = at(p.position, z);
-      cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1,
-                      p.isWall ? ParticleKind::wall : ParticleKind::dummy, spec.patch,
-                      T.vector(toVec3(p.normal)), spec.density * dx * dx * depth);
+      cloud.push_back(x, id++, Vec3::Zero(), 0.0, -1, p.isWall ? ParticleKind::wall : ParticleKind::dummy,
+                      spec.patch, T.vector(toVec3(p.normal)), spec.density * dx * dx * depth);
       result.walls[static_cast<std::size_t>(p.wall)].bounds.extend(x);
     }
   }

@@ -19,12 +19,21 @@ namespace isph {
 enum class InitialPressure { zero, lithostatic };
 enum class MaterialSide { left, right, automatic };
 
+// `zRange (z0 z1);` of a region in a 3D scene: the region is present in the layers whose
+// z = (k + 1/2) dx lies in [z0, z1] (ZSlabs.hpp); absent, it spans the width.
+struct ZRange {
+  double lo = 0, hi = 0;  // [m]
+  SourceLocation where;   // the zRange entry
+  bool contains(double z) const { return z >= lo && z <= hi; }
+};
+
 struct RegionSpec {
   std::string name;
   std::unique_ptr<Region> shape;
   label material = 0;                   // index into Scene::materials
   double density = 0;                   // rho of that material [kg/m³]
   Vec3 initialVelocity = Vec3::Zero();  // scene frame
+  std::optional<ZRange> zRange;         // 3D: part of the width only
   SourceLocation where;                 // the region's entry (for errors)
 };
 

@@ -8,8 +8,10 @@
 #include "core/Plausibility.hpp"
 #include "core/Registry.hpp"
 #include "core/dictionary/Dictionary.hpp"
+#include "particleGeneration/Extrusion.hpp"
 #include "particleGeneration/SceneMaterials.hpp"
 #include "particleGeneration/ShapeInput.hpp"
+#include "particleGeneration/ZSlabs.hpp"
 #include "sph/kernels/Kernel.hpp"
 
 namespace isph {
@@ -145,6 +147,28 @@ void readInitialState(const Dictionary& dict, const std::filesystem::path& caseD
   }
 }
 
+// `zRange (z0 z1);` of a region: 3D only, inside the width, holding a layer.
+std::optional<ZRange> readZRange(const Dictionary& d, const Scene& scene) {
+  if (!d.found("zRange")) return std::nullopt;
+  if (scene.dimension != 3)
+    invalid(d, "zRange", "bounds a region in z in a 3D scene: it needs dimension 3 (a 2D region spans the unit width)");
+  const auto z = d.get<std::vector<double>>("zRange");
+  if (z.size() != 2) invalid(d, "zRange", fmt::format("expected two values (z0 z1) [m], found {}", z.size()));
+  const double extent = static_cast<double>(extrusionLayers(scene).size()) * scene.spacing;
+  if (!(z[0] < z[1] && z[0] >= 0 && z[1] <= extent * (1 + 1e-12))) {
+    invalid(d, "zRange",
+            fmt::format("expected 0 <= z0 < z1 <= {:.6g} (the scene's width), found ({} {})", extent, z[0], z[1]));
+  }
+  ZRange range{z[0], z[1], d.findEntry("zRange")->location()};
+  if (layersIn(scene, range) == 0) {
+    invalid(d, "zRange",
+            fmt::format("({} {}) holds no layer: the layers lie at z = (k + 1/2) dx = {:.6g}, {:.6g}, ... (a region is "
+                        "present in the layers whose z is in the range)",
+                        z[0], z[1], scene.spacing / 2, 1.5 * scene.spacing));
+  }
+  return range;
+}
+
 void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
                  const ShapeContext& context, const Vec3& initialVelocity, Scene& scene) {
   const Dictionary& regions = dict.subDict("regions");
@@ -170,6 +194,7 @@ void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
     r.material = table.index(material, d.findEntry("material")->location());
     r.density = table.density(r.material);
     r.initialVelocity = d.getOptional<Vec3>("initialVelocity").value_or(initialVelocity);
+    r.zRange = readZRange(d, scene);
     d.checkKeywords();
     scene.regions.push_back(std::move(r));
   }
@@ -221,6 +246,11 @@ void readWalls(const Dictionary& dict, const ShapeContext& context, Scene& scene
       w.side = side == "left"    ? MaterialSide::left
                : side == "right" ? MaterialSide::right
                                  : MaterialSide::automatic;
+    }
+    if (d.found("zRange")) {
+      invalid(d, "zRange",
+              "a wall spans the scene's width: a wall of part of it (its end faces) is not available; zRange "
+              "bounds a region");
     }
     w.density = d.getOrDefault("rho", defaultDensity);
     if (!(w.density > 0)) invalid(d, "rho", fmt::format("must be positive, found {}", w.density));

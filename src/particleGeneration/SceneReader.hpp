@@ -9,7 +9,8 @@
 //   cloud           particles;   // the cloud's name: 0/lagrangian/<cloud>
 //   dimension       2;           // 2: plane strain in x-y | 3: the x-y scene extruded along z
 //   width           0.2;         // 3D only: z from 0 to width (round(width/dx) layers); regions
-//                                // and walls are x-y shapes that span it (Extrusion.hpp)
+//                                // and walls are x-y shapes that span it (Extrusion.hpp);
+//                                // a region may fill part of it (zRange below)
 //   sideWalls                    // 3D only, optional: walls at z = 0 and z = width
 //   {
 //       frictionAngle 25;        // required
@@ -43,6 +44,8 @@
 //           thickness 0.59;                       //   optional thickness caps it at lower + t
 //           material    sand;    // a material of constant/materialProperties (its rho)
 //           initialVelocity (0 0 0);              // optional, overrides the global one
+//           zRange      (0 0.1); // 3D only, optional: present in the layers with z in [z0, z1]
+//                                // (default: the whole width; ZSlabs.hpp)
 //       }
 //   }
 //   walls                        // solid boundaries, each a patch

@@ -80,8 +80,50 @@ TEST(Extrusion, EveryLayerHoldsTheSection) {
   EXPECT_NEAR(mass, rho * 0.4 * 0.3 * 0.2, 1e-9);
   EXPECT_NEAR(slab.regions[0].mass, rho * 0.4 * 0.3 * 0.2, 1e-9);
   for (std::size_t i : ofKind(slab.cloud, ParticleKind::wall)) {
-    if (slab.cloud.patch[i] != 1) EXPECT_EQ(slab.cloud.normal[i].z(), 0.0);
+    if (slab.cloud.patch[i] != 1) {
+      EXPECT_EQ(slab.cloud.normal[i].z(), 0.0);
+    }
     EXPECT_DOUBLE_EQ(slab.cloud.mass[i], rho * dx * dx * dx);
+  }
+}
+
+// `zRange` (ZSlabs.hpp): water over part of the width, and a second region over the rest.
+// Each fills exactly the layers whose z lies in its range, with the section it has alone; the
+// walls span the width; the particles are the 2D section's in each layer.
+TEST(Extrusion, ARegionFillsTheLayersOfItsZRange) {
+  Scene s = tank(3, true);
+  s.regions[0].zRange = ZRange{0.0, 0.1, {}};  // layers 0.025, 0.075
+  addRegion(s, "rest", std::make_unique<Box>(Vec2(0, 0), Vec2(0.4, 0.15)), 2 * rho);
+  s.regions[1].zRange = ZRange{0.1, 0.2, {}};  // layers 0.125, 0.175: half the depth
+  const GenerationResult r = generateParticles(s);
+  const GenerationResult flat = generateParticles(tank(2, false));
+  const auto flatWater = section(flat.cloud, ParticleKind::material, 0.0);
+  std::size_t lowSites = 0;
+  for (const auto& [x, y] : flatWater) lowSites += y < 0.15e9 ? 1 : 0;
+  ASSERT_GT(lowSites, 0u);
+  for (const double z : extrusionLayers(s)) {
+    const auto here = section(r.cloud, ParticleKind::material, z);
+    if (z < 0.1) {
+      EXPECT_EQ(here, flatWater) << "z = " << z;
+    } else {
+      EXPECT_EQ(here.size(), lowSites) << "z = " << z;
+    }
+    EXPECT_EQ(section(r.cloud, ParticleKind::wall, z), section(flat.cloud, ParticleKind::wall, 0.0)) << "z = " << z;
+  }
+  ASSERT_EQ(r.regions.size(), 2u);
+  EXPECT_EQ(r.regions[0].particles, static_cast<long>(2 * flatWater.size()));
+  EXPECT_EQ(r.regions[1].particles, static_cast<long>(2 * lowSites));
+  EXPECT_NEAR(r.regions[0].mass, rho * 0.4 * 0.3 * 0.1, 1e-9);
+  EXPECT_NEAR(r.regions[1].mass, 2 * rho * 0.4 * 0.15 * 0.1, 1e-9);
+  EXPECT_NEAR(r.regions[1].geometricArea, 0.4 * 0.15 * 0.1, 1e-12);
+  // Material particles in cloud order: water (both its layers) first, then the rest.
+  for (std::size_t i = 0; i < r.cloud.size(); ++i) {
+    if (r.cloud.kind[i] != static_cast<label>(ParticleKind::material)) continue;
+    const bool water = i < static_cast<std::size_t>(r.regions[0].particles);
+    EXPECT_EQ(r.cloud.positions[i].z() < 0.1, water) << i;
+    // p = rho g (H - y) with each column's own height and density
+    const double H = water ? 0.3 : 0.15, density = water ? rho : 2 * rho;
+    EXPECT_NEAR(r.cloud.p[i], density * 9.81 * (H - r.cloud.positions[i].y()), 1e-9) << i;
   }
 }
 

@@ -267,6 +267,35 @@ TEST_F(SceneReader, ThreeDimensionalScene) {
           "expected two names");
 }
 
+TEST_F(SceneReader, ARegionOfPartOfTheWidth) {
+  const std::string square = replaced(validDict, "lattice         hexagonal;", "lattice         square;");
+  const std::string threeD = square + "dimension 3;\nwidth 0.2;\n";
+  const std::string half = replaced(threeD, "material sand; }", "material sand; zRange (0 0.1); }");
+  c.write("system/particleMeshDict", half);
+  const Scene s = readScene(c.path());
+  ASSERT_TRUE(s.regions[0].zRange);
+  EXPECT_DOUBLE_EQ(s.regions[0].zRange->lo, 0);
+  EXPECT_DOUBLE_EQ(s.regions[0].zRange->hi, 0.1);
+  EXPECT_FALSE(s.regions[1].zRange);
+
+  const auto errorAt = [&](const std::string& dict, const std::string& keyword, const std::string& says) {
+    const FatalError e = sceneError(c, dict);
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    expectAt(e, "particleMeshDict", lineOf(dict, keyword));
+  };
+  const auto withRange = [&](const std::string& base, const std::string& range) {
+    return replaced(base, "material sand; }", "material sand; zRange " + range + "; }");
+  };
+  errorAt(withRange(square, "(0 0.1)"), "zRange", "needs dimension 3");
+  errorAt(withRange(threeD, "(0.1 0.05)"), "zRange", "0 <= z0 < z1 <= 0.2");
+  errorAt(withRange(threeD, "(0 0.3)"), "zRange", "0 <= z0 < z1 <= 0.2");
+  errorAt(withRange(threeD, "(-0.01 0.1)"), "zRange", "0 <= z0 < z1 <= 0.2");
+  errorAt(withRange(threeD, "(0 0.1 0.2)"), "zRange", "expected two values");
+  errorAt(withRange(threeD, "(0.1001 0.1049)"), "zRange", "holds no layer");  // layers at 0.095, 0.105
+  // A wall of part of the width is not available (its end faces: doc/notes/threeD.md).
+  errorAt(replaced(threeD, "patch obstacle;", "patch obstacle; zRange (0 0.1);"), "barrier", "not available");
+}
+
 const std::string profileDict = R"(spacing 0.1;
 regions
 {
