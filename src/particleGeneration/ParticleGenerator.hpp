@@ -4,7 +4,8 @@
 //  2. put each wall's material side on its left (materialSide, or auto: probe the regions),
 //  3. wall and dummy layers along every wall,
 //  4. remove material sites inside solids or within the clearance of a wall surface,
-//  5. a 3D scene: the section repeated along z, and its side walls (Extrusion.hpp),
+//  5. a 3D scene: the section repeated along z, and its side walls (Extrusion.hpp); a region
+//     with zRange only in its layers (ZSlabs.hpp: steps 1 and 4 per slab of layers),
 //  6. fields: origId 0..N-1 (material by region, then walls, then side walls), mass = ρ × site
 //     area (walls ρ_wall dx²; in 3D times dx), U, kind, material, patch, normal, the initial
 //     pressure (lithostatic along g), all transformed from the scene frame to the case frame.
