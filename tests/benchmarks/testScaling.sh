@@ -2,7 +2,7 @@
 # benchmark-smoke: tutorials/benchmarks/scaling/Allrun at its smallest size (10k particles,
 # 3 steps, one thread, the column collapse, each run twice: -repeat 2; on 1 and on 2 MPI ranks)
 # on a copy: its CSV rows hold what the issue asks for, with values a working solver gives
-# (bounds stated below). OpenMPI refuses root (CI) unless told: set here.
+# (bounds stated below); then the column as a 3D slab (-cases columnCollapse3D), 2 steps. OpenMPI refuses root (CI) unless told: set here.
 #   testScaling.sh <project dir> <build dir>
 . "$1/tests/tutorials/TutorialTest.sh"
 project=$1 build=$2
@@ -42,4 +42,19 @@ check "the PPE solve is among the phases of each rank count" "$(grep -c ',PPE so
 check "the 2-rank run's phases include its migration and ghosts" "$(grep -c ',migration and ghosts,.*,2$' "$work/scaling/phases.csv") == 1"
 check "summary.txt written, a spread per rank count" "$(grep -c 'spread' "$work/scaling/summary.txt") == 2"
 check "summary.txt has the 1 / 2 ranks speed-up of the step" "$(grep -c '1 / 2 ranks: .* s / .* s = .*x$' "$work/scaling/summary.txt") >= 1"
+
+# The 3D case: the spacing from the material's volume, the slab between side walls.
+cp -r "$project/tutorials/benchmarks/scaling" "$work/scaling3D"
+if ! "$work/scaling3D/Allrun" -sizes 10k -threads 1 -steps 2 -cases columnCollapse3D > "$work/Allrun3D.log" 2>&1
+then
+    cat "$work/Allrun3D.log"
+    exit 1
+fi
+row=$(sed -n 2p "$work/scaling3D/results.csv")
+log=$work/scaling3D/runs/columnCollapse3D-10k-1-np1-r1/log.isphLandslideFoam
+check "3D: the solver ran a 3D cloud" "$(grep -c '^ *3D, [0-9]* particles' "$log") == 1"
+check "3D: about 10k material particles (9,000-11,000)" "$(field 2) >= 9000 && $(field 2) <= 11000"
+check "3D: mean neighbours of a cubic lattice with h = 1.3 dx (55-80)" "$(field 9) >= 55 && $(field 9) <= 80"
+check "3D: side walls in the cloud (the patch sideWalls)" \
+      "$(grep -c 'sideWalls' "$work/scaling3D/runs/columnCollapse3D-10k-mesh/0/lagrangian/particles/cloudProperties") >= 1"
 finish
