@@ -2,6 +2,7 @@
 // A region of space that material fills: a box, a polygon, a profile (2D now; a 3D region is
 // another subclass). Regions are chosen by name in particleMeshDict (`type box;`) from a
 // registry, so a new shape is an addition, not an edit of the particle generator.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ class Region {
   // Appends the parameters t > 0 at which the ray o + t d crosses the boundary (in any
   // order; a crossing may appear twice at a corner).
   virtual void rayCrossings(const Vec3& o, const Vec3& d, std::vector<double>& t) const = 0;
+
+  // A 3D scene extrudes a 2D region along z; a 3D region (dimension() 3) is cut instead: its
+  // x-y section at z (null where it has none), and its outline in x-y (the union of its
+  // sections: where a wall looking for the material's side probes).
+  virtual std::unique_ptr<Region> sectionAt(double /*z*/) const { return nullptr; }
+  virtual std::unique_ptr<Region> outline() const { return nullptr; }
 };
 
 }  // namespace isph

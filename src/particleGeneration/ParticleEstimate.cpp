@@ -16,7 +16,9 @@ ParticleEstimate estimateParticles(const Scene& scene) {
   ParticleEstimate e;
   const bool threeD = scene.dimension == 3;  // the section repeated along z (Extrusion.hpp)
   for (const RegionSpec& r : scene.regions) {
-    e.material += r.shape->measure() / lattice.siteArea() * (threeD ? static_cast<double>(layersIn(scene, r.zRange)) : 1.0);
+    e.material += r.shape->dimension() == 3
+                      ? r.shape->measure() / (lattice.siteArea() * scene.spacing)
+                      : r.shape->measure() / lattice.siteArea() * (threeD ? static_cast<double>(layersIn(scene, r.zRange)) : 1.0);
     const BoundingBox box = r.shape->boundingBox();
     if (box.empty()) continue;
     // Lattice::range's columns and rows, in floating point (no overflow for any spacing).

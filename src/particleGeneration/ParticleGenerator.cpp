@@ -25,9 +25,10 @@ void checkRegionsHoldSites(const Scene& scene, const std::vector<RegionReport>& 
     const RegionSpec& region = scene.regions[r];
     fatalIOError(
         region.where,
-        fmt::format("region '{}' ({}, area {:.4g} m²) holds no lattice site at spacing {} (one "
+        fmt::format("region '{}' ({}, {} {:.4g} {}) holds no lattice site at spacing {} (one "
                     "site stands for {:.4g} m²): make it larger or the spacing smaller",
-                    region.name, region.shape->type(), region.shape->measure(), scene.spacing,
+                    region.name, region.shape->type(), region.shape->dimension() == 3 ? "volume" : "area",
+                    region.shape->measure(), region.shape->dimension() == 3 ? "m³" : "m²", scene.spacing,
                     lattice.siteArea()));
   }
 }
@@ -85,9 +86,10 @@ Section buildSection(const Scene& scene, const ZSlab& slab, const std::vector<Wa
   const std::size_t nRegions = scene.regions.size();
   std::vector<const Region*> shapes;
   std::vector<std::size_t> regionOf;  // present region -> scene region
+  std::vector<std::unique_ptr<Region>> cuts(nRegions);  // 3D regions' sections at this slab
   for (std::size_t r = 0; r < nRegions; ++r) {
     if (!slab.regions[r]) continue;
-    shapes.push_back(scene.regions[r].shape.get());
+    shapes.push_back(sectionOf(scene.regions[r], slab.z.front(), cuts[r]));
     regionOf.push_back(r);
   }
   Section section;
@@ -170,7 +172,9 @@ std::vector<RegionReport> regionReports(const Scene& scene, const std::vector<ZS
     for (std::size_t q = 0; q < r; ++q) {
       if (lost[q] > 0) report.lostTo.emplace_back(scene.regions[q].name, lost[q]);
     }
-    report.geometricArea = spec.shape->measure() * depth * static_cast<double>(layersIn(scene, spec.zRange));
+    report.geometricArea = spec.shape->dimension() == 3
+                               ? spec.shape->measure()
+                               : spec.shape->measure() * depth * static_cast<double>(layersIn(scene, spec.zRange));
     report.particleArea = static_cast<double>(report.particles) * lattice.siteArea() * depth;
     report.mass = report.particleArea * spec.density;
     reports.push_back(std::move(report));
@@ -206,8 +210,12 @@ GenerationResult generateParticles(const Scene& scene) {
   const ParticleEstimate estimate = estimateParticles(scene);
   checkParticleEstimate(scene, estimate);  // before anything is allocated
 
-  std::vector<const Region*> shapes;
-  for (const RegionSpec& r : scene.regions) shapes.push_back(r.shape.get());
+  std::vector<const Region*> shapes;  // in x-y: a 3D region's outline
+  std::vector<std::unique_ptr<Region>> outlines;
+  for (const RegionSpec& r : scene.regions) {
+    if (r.shape->dimension() == 3) outlines.push_back(r.shape->outline());
+    shapes.push_back(r.shape->dimension() == 3 ? outlines.back().get() : r.shape.get());
+  }
   std::vector<WallSide> sides;
   const std::vector<WallSurface> walls =
       orientWalls(scene.walls, shapes, dx, scene.wallLayers * dx, sides);

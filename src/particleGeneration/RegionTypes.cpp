@@ -2,11 +2,14 @@
 //   box     { min (x y 0); max (x y 0); }
 //   polygon { points ((x y 0) ...); }            or pointsFile "constant/area.csv";
 //   profile { upper (...); lower (...); }        or upperFile/lowerFile; optional thickness
+//   cylinder { base (x y z); radius R; height H; }  3D only: vertical axis (along y) through
+//                                                the base's centre (Cylinder.hpp)
 #include <fmt/format.h>
 
 #include "core/Registry.hpp"
 #include "core/dictionary/Dictionary.hpp"
 #include "geometry/Box.hpp"
+#include "geometry/Cylinder.hpp"
 #include "geometry/Polygon.hpp"
 #include "geometry/Profile.hpp"
 #include "particleGeneration/ShapeInput.hpp"
@@ -61,7 +64,20 @@ std::unique_ptr<Region> readProfile(const Dictionary& dict, const ShapeContext& 
   return std::make_unique<Profile>(upper.points, lower.points, thickness);
 }
 
+std::unique_ptr<Region> readCylinder(const Dictionary& dict, const ShapeContext&) {
+  const Vec3 base = dict.get<Vec3>("base");
+  for (const char* key : {"radius", "height"}) {
+    if (!(dict.get<double>(key) > 0)) {
+      fatalIOError(dict.findEntry(key)->location(),
+                   fmt::format("keyword '{}' in dictionary {}: must be positive, found {}", key, dict.name(),
+                               dict.get<double>(key)));
+    }
+  }
+  return std::make_unique<Cylinder>(base, dict.get<double>("radius"), dict.get<double>("height"));
+}
+
 const bool registered = RegionRegistry::add("box", readBox) &&
+                        RegionRegistry::add("cylinder", readCylinder) &&
                         RegionRegistry::add("polygon", readPolygon) &&
                         RegionRegistry::add("profile", readProfile);
 

@@ -195,6 +195,11 @@ void readRegions(const Dictionary& dict, const std::filesystem::path& caseDir,
     r.density = table.density(r.material);
     r.initialVelocity = d.getOptional<Vec3>("initialVelocity").value_or(initialVelocity);
     r.zRange = readZRange(d, scene);
+    if (r.shape->dimension() == 3) {
+      if (scene.dimension != 3)
+        invalid(d, "type", fmt::format("a {} is a 3D region: it needs dimension 3 (and width)", type));
+      if (r.zRange) invalid(d, "zRange", fmt::format("a {} is bounded in z already: zRange is for x-y shapes", type));
+    }
     d.checkKeywords();
     scene.regions.push_back(std::move(r));
   }

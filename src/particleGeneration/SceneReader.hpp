@@ -36,12 +36,13 @@
 //   {
 //       <name>
 //       {
-//           type        box;     // box | polygon | profile (RegionTypes.cpp)
+//           type        box;     // box | polygon | profile | cylinder (3D) (RegionTypes.cpp)
 //           min (0 0 0); max (0.5 0.242 0);       // box
 //           points ((0 0 0) (1 0 0) (0 1 0));      // polygon (or pointsFile "constant/a.csv")
 //           upper (...); lower (...);             // profile: material between them; or
 //           upperFile "constant/ground.csv";      //   from CSV files (x,y columns); an
 //           thickness 0.59;                       //   optional thickness caps it at lower + t
+//           base (0.1 0 0.1); radius 0.05; height 0.1;  // cylinder: vertical axis (y)
 //           material    sand;    // a material of constant/materialProperties (its rho)
 //           initialVelocity (0 0 0);              // optional, overrides the global one
 //           zRange      (0 0.1); // 3D only, optional: present in the layers with z in [z0, z1]

@@ -14,11 +14,23 @@ std::vector<ZSlab> zSlabs(const Scene& scene) {
   std::vector<ZSlab> slabs;
   for (const double z : extrusionLayers(scene)) {
     std::vector<bool> regions;
-    for (const RegionSpec& r : scene.regions) regions.push_back(present(r.zRange, z));
-    if (slabs.empty() || slabs.back().regions != regions) slabs.push_back({{}, std::move(regions)});
+    bool cut = false;  // a 3D region's section here: a slab of one layer
+    for (const RegionSpec& r : scene.regions) {
+      const bool threeD = r.shape->dimension() == 3;
+      const bool here = threeD ? r.shape->sectionAt(z) != nullptr : present(r.zRange, z);
+      regions.push_back(here);
+      cut = cut || (here && threeD);
+    }
+    if (slabs.empty() || slabs.back().regions != regions || cut) slabs.push_back({{}, std::move(regions)});
     slabs.back().z.push_back(z);
   }
   return slabs;
+}
+
+const Region* sectionOf(const RegionSpec& r, double z, std::unique_ptr<Region>& cut) {
+  if (r.shape->dimension() != 3) return present(r.zRange, z) ? r.shape.get() : nullptr;
+  cut = r.shape->sectionAt(z);
+  return cut.get();
 }
 
 long layersIn(const Scene& scene, const std::optional<ZRange>& range) {

@@ -11,6 +11,7 @@
 
 #include "SceneTestHelpers.hpp"
 #include "geometry/Box.hpp"
+#include "geometry/Cylinder.hpp"
 #include "particleGeneration/Extrusion.hpp"
 
 namespace isph {
@@ -124,6 +125,41 @@ TEST(Extrusion, ARegionFillsTheLayersOfItsZRange) {
     // p = rho g (H - y) with each column's own height and density
     const double H = water ? 0.3 : 0.15, density = water ? rho : 2 * rho;
     EXPECT_NEAR(r.cloud.p[i], density * 9.81 * (H - r.cloud.positions[i].y()), 1e-9) << i;
+  }
+}
+
+// A 3D region (Cylinder.hpp) is cut, not extruded: each layer holds the lattice sites of its
+// section, so the particles are exactly the cubic lattice's sites inside the cylinder (radius
+// 0.125 m, 0.2 m high, on a bed; 2.5 and 5 spacings of radius). Their volume against π R² H
+// is the staircase circle's: 0.815 and 1.019 here.
+TEST(Extrusion, ACylinderFillsItsSectionInEachLayer) {
+  for (const double spacing : {0.05, 0.025}) {
+    Scene s = emptyScene(spacing);
+    s.dimension = 3;
+    s.width = 0.4;
+    const Vec3 base(0.2, 0, 0.2);
+    addRegion(s, "column", std::make_unique<Cylinder>(base, 0.125, 0.2), rho);
+    addWall(s, "bed", {{-0.1, 0}, {0.5, 0}});
+    const GenerationResult r = generateParticles(s);
+    long expected = 0;  // the cubic lattice's sites inside the cylinder
+    for (long k = 0; k < std::lround(0.4 / spacing); ++k) {
+      for (long i = 0; i < std::lround(0.4 / spacing); ++i) {
+        for (long j = 0; j < std::lround(0.2 / spacing); ++j) {
+          expected += Cylinder(base, 0.125, 0.2).contains(Vec3((i + 0.5) * spacing, (j + 0.5) * spacing,
+                                                               (k + 0.5) * spacing))
+                          ? 1
+                          : 0;
+        }
+      }
+    }
+    ASSERT_EQ(r.regions[0].particles, expected) << "dx = " << spacing;
+    for (std::size_t i = 0; i < r.cloud.size(); ++i) {
+      if (r.cloud.kind[i] != static_cast<label>(ParticleKind::material)) continue;
+      EXPECT_TRUE(Cylinder(base, 0.125, 0.2).contains(r.cloud.positions[i])) << i;
+      EXPECT_DOUBLE_EQ(r.cloud.mass[i], rho * spacing * spacing * spacing);
+    }
+    const double volume = M_PI * 0.125 * 0.125 * 0.2;
+    EXPECT_DOUBLE_EQ(r.regions[0].geometricArea, volume);
   }
 }
 

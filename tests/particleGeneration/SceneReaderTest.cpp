@@ -296,6 +296,30 @@ TEST_F(SceneReader, ARegionOfPartOfTheWidth) {
   errorAt(replaced(threeD, "patch obstacle;", "patch obstacle; zRange (0 0.1);"), "barrier", "not available");
 }
 
+TEST_F(SceneReader, ACylinderIsA3DRegion) {
+  const std::string square = replaced(validDict, "lattice         hexagonal;", "lattice         square;");
+  const std::string cylinder =
+      "type cylinder; base (0.3 0 0.1); radius 0.1; height 0.2; material sand; }";
+  const std::string threeD = replaced(square + "dimension 3;\nwidth 0.2;\n",
+                                      "type box; min (0 0 0); max (0.5 0.24 0); material sand; }", cylinder);
+  c.write("system/particleMeshDict", threeD);
+  const Scene s = readScene(c.path());
+  EXPECT_EQ(s.regions[0].shape->type(), "cylinder");
+  EXPECT_EQ(s.regions[0].shape->dimension(), 3);
+  EXPECT_NEAR(s.regions[0].shape->measure(), M_PI * 0.01 * 0.2, 1e-15);
+
+  const auto errorAt = [&](const std::string& dict, const std::string& keyword, const std::string& says) {
+    const FatalError e = sceneError(c, dict);
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    expectAt(e, "particleMeshDict", lineOf(dict, keyword));
+  };
+  errorAt(replaced(square, "type box; min (0 0 0); max (0.5 0.24 0); material sand; }", cylinder), "type cylinder",
+          "needs dimension 3");
+  errorAt(replaced(threeD, "height 0.2;", "height 0.2; zRange (0 0.1);"), "zRange", "bounded in z already");
+  errorAt(replaced(threeD, "radius 0.1;", "radius 0;"), "radius 0", "must be positive");
+  errorAt(replaced(threeD, "height 0.2;", "height -1;"), "height -1", "must be positive");
+}
+
 const std::string profileDict = R"(spacing 0.1;
 regions
 {
