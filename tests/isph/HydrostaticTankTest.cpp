@@ -79,6 +79,51 @@ TEST(HydrostaticTank, StaysAtRestWithTheHydrostaticPressureForTwoSeconds) {
   EXPECT_LT(maxSpeed, 1e-7) << "peak speed [m/s]";
 }
 
+// Still water around a solid block standing on the bed (a box wall 0.1 m wide, x 0.15-0.25 m,
+// frictionless) for 0.5 s, 20 particles over the depth; the exact state is the tank's, U = 0
+// and p = ρ g × depth, with the same bounds as the tank's test above. The block out of the
+// water (0.5 m high): exact (measured here: L2 1.2e-8, peak speed 1.7e-10 m/s, the tank's
+// noise; the bounds are the tank test's).
+// Under the water (0.2 m high) its top corners are convex corners under the material, and the
+// water does not stay at rest: 0.016 m/s after one step, 0.78 m/s and p L2 44 % at 0.5 s
+// (this test), p +1,222 Pa above the block after one step (doc/notes/threeD.md; most of it the PPE's relaxation source, which
+// reads the corner's wall layers as compression). Disabled: below the goal, the cause not
+// fixed (the wall condition at convex corners: issue 48's and 49's ground).
+void expectBlockedTankAtRest(const std::string& name, const std::string& blockHeight) {
+  CaseRunner c("hydrostaticTank", name);
+  c.set("system/particleMeshDict", "spacing", "0.02");
+  ASSERT_NO_FATAL_FAILURE(c.replaceText(
+      "system/particleMeshDict", "    bottom ",
+      "    block  { type box; min (0.15 0 0); max (0.25 " + blockHeight + " 0); frictionAngle 0; }\n    bottom "));
+  c.set("system/controlDict", "endTime", "0.5");
+  c.set("system/controlDict", "writeInterval", "0.5");
+  ASSERT_EQ(c.run(PARTICLEMESH_EXE, "particleMesh"), 0);
+  ASSERT_EQ(c.run(SOLVER_EXE, "isphLandslideFoam"), 0) << "see " << c.path() / "log.isphLandslideFoam";
+  EXPECT_EQ(c.logValue("isphLandslideFoam", "Wall crossings in the run:"), "0");
+  const ParticleCloud cloud = readCloud(c.path() / "0.5", "particles");
+  const double rho = 1000, g = 9.81, surface = 0.39;  // the top particles' centres (p = 0 there)
+  double maxSpeed = 0, sumError2 = 0, sumExact2 = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.kind[i] != 0) continue;
+    maxSpeed = std::max(maxSpeed, cloud.U[i].norm());
+    const double exact = rho * g * (surface - cloud.positions[i].y());
+    sumError2 += (cloud.p[i] - exact) * (cloud.p[i] - exact);
+    sumExact2 += exact * exact;
+  }
+  const double l2 = std::sqrt(sumError2 / sumExact2);
+  std::printf("L2 error of p %.3g%%, peak speed %.3g m/s\n", 100 * l2, maxSpeed);
+  EXPECT_LT(l2, 1e-6) << "L2 error of the pressure against rho g depth";
+  EXPECT_LT(maxSpeed, 1e-7) << "peak speed [m/s]";
+}
+
+TEST(HydrostaticTank, StaysAtRestBesideABlockOutOfTheWater) {
+  expectBlockedTankAtRest("hydrostaticTankBlockOut", "0.5");
+}
+
+TEST(HydrostaticTank, DISABLED_StaysAtRestOverASubmergedBlock) {
+  expectBlockedTankAtRest("hydrostaticTankBlockUnder", "0.2");
+}
+
 // The force on each vertical wall from the solver's wall pressures, sampled by sampleForces:
 // the wall particles' hydrostatic pressures sum to ρ g (H² − 9 dx²)/2 per metre, second order
 // in dx/H (−2.25 %, −0.5625 %, −0.1406 % at 20, 40 and 80 particles over the depth, the same to
