@@ -92,9 +92,11 @@ TEST(HydrostaticTank, StaysAtRestWithTheHydrostaticPressureForTwoSeconds) {
 // noise; the bounds are the tank test's).
 // Under the water (0.2 m high) its top corners are convex corners under the material, and the
 // water does not stay at rest: 0.016 m/s after one step, 0.78 m/s and p L2 44 % at 0.5 s
-// (this test), p +1,222 Pa above the block after one step (doc/notes/threeD.md; most of it the PPE's relaxation source, which
-// reads the corner's wall layers as compression). Disabled: below the goal, the cause not
-// fixed (the wall condition at convex corners: issue 48's and 49's ground).
+// (this test), p +1,222 Pa above the block after one step (doc/notes/threeD.md: the PPE's
+// relaxation source reads the corner's wall layers as compression, and the wall safeguard
+// moves the water beside a corner, 0.35 dx from the corner particle along its mean normal).
+// Disabled: below the goal, the cause not fixed (the wall condition at convex corners: issue
+// 48's and 49's ground).
 void expectBlockedTankAtRest(const std::string& name, const std::string& blockHeight) {
   CaseRunner c("hydrostaticTank", name);
   ASSERT_NO_FATAL_FAILURE(c.replaceText(
