@@ -40,14 +40,18 @@ std::vector<SideWallParticle> sideWallParticles(const Scene& scene, const Boundi
   if (scene.dimension != 3 || !scene.sideWalls || section.empty()) return out;
   const double dx = scene.spacing;
   const Lattice lattice(LatticeType::square, dx, scene.latticeOrigin);
-  const SiteRange range = lattice.range(section);
+  BoundingBox covered = section;  // clipped to the side walls' own extent (SideWallSpec)
+  covered.min.head<2>() = covered.min.head<2>().cwiseMax(scene.sideWalls->min);
+  covered.max.head<2>() = covered.max.head<2>().cwiseMin(scene.sideWalls->max);
+  if (covered.empty()) return out;
+  const SiteRange range = lattice.range(covered);
   const MaterialSideOfWalls sides = sectionSides(walls, dx);
   const double deepest = (scene.wallLayers - 0.5) * dx;  // a dummy's reach, as in 2D
   std::vector<std::pair<Vec2, bool>> sites;  // x-y, and whether the section's walls make it solid
   for (long j = range.j0; j <= range.j1; ++j) {
     for (long i = range.i0; i <= range.i1; ++i) {
       const Vec2 s = lattice.site(i, j);
-      if (!section.contains(toVec3(s))) continue;
+      if (!covered.contains(toVec3(s))) continue;
       const auto verdict = sides.empty() ? MaterialSideOfWalls::Verdict{} : sides.classify(toVec3(s));
       const bool solid = verdict.side != MaterialSideOfWalls::Side::material;
       if (solid && -verdict.depth > deepest) continue;

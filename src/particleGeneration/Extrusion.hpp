@@ -6,7 +6,8 @@
 // surface. The ends z = 0 and z = n dx are open (the material leaves there) unless the scene
 // has `sideWalls`: then each end is a plane wall, its `wallLayers` layers at z = -m dx and
 // n dx + m dx (m = 0 .. layers-1) on the x-y lattice of the material sites, over the section's
-// bounding box (material, walls and dummies: what the walls enclose). At a side wall's layer
+// bounding box (material, walls and dummies: what the walls enclose; clipped to the side
+// walls' `min`/`max` when given: SideWallSpec). At a side wall's layer
 // m = 0 a site is a wall particle with its normal along ±z into the material, except where the
 // section's walls make it solid (inside a box wall, behind a bed, beside a tank's corner: the
 // section's wall particles tell, MaterialSideOfWalls.hpp): there the material cannot touch it

@@ -32,8 +32,11 @@ ParticleEstimate estimateParticles(const Scene& scene) {
     walls.extend(w.surface->boundingBox().inflated((scene.wallLayers - 1) * scene.spacing));  // the dummies' reach
   }
   if (threeD) {  // the side walls
-    if (scene.sideWalls && !walls.empty())
+    if (scene.sideWalls && !walls.empty()) {
+      walls.min.head<2>() = walls.min.head<2>().cwiseMax(scene.sideWalls->min);  // their extent
+      walls.max.head<2>() = walls.max.head<2>().cwiseMin(scene.sideWalls->max);
       e.walls += 2.0 * scene.wallLayers * (walls.size().x() / scene.spacing + 1) * (walls.size().y() / scene.spacing + 1);
+    }
   }
   return e;
 }

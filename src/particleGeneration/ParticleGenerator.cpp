@@ -251,6 +251,15 @@ GenerationResult generateParticles(const Scene& scene) {
   // by layer (then wall), then the side walls.
   const std::vector<SideWallParticle> sideWalls =
       sideWallParticles(scene, sectionBounds(sections, wallLayers.particles), wallLayers.particles);
+  std::size_t materialCount = 0;
+  for (std::size_t k = 0; k < slabs.size(); ++k) materialCount += sections[k].material.size() * slabs[k].z.size();
+  if (sideWalls.size() > 5 * materialCount) {
+    warning(fmt::format("the side walls hold {} particles, {:.0f} times the material's: they cover the section's "
+                        "bounding box, walls included; limit them to where the material can go with "
+                        "`min (x y 0); max (x y 0);` in sideWalls",
+                        sideWalls.size(), static_cast<double>(sideWalls.size()) / std::max<double>(1.0, static_cast<double>(materialCount))),
+            scene.sideWalls->where);
+  }
   const std::vector<double> layers = extrusionLayers(scene);
   ParticleCloud& cloud = result.cloud;
   cloud.name = scene.cloudName;

@@ -51,6 +51,10 @@ struct WallSpec {
 struct SideWallSpec {
   label patch[2] = {0, 0};  // indices into Scene::patches: the wall at z = 0, at z = width
   double density = 0;    // mass of a wall or dummy particle = density dx³
+  // The part of the x-y section they cover (`min (x y 0); max (x y 0);`): the section's
+  // bounding box clipped to it (default: no clip). A flume's 3 m catch wall made its side walls
+  // 3 m high, 24 times the sand's particles.
+  Vec2 min = Vec2::Constant(-1e300), max = Vec2::Constant(1e300);
   SourceLocation where;  // the sideWalls entry
 };
 

@@ -287,6 +287,13 @@ void readSideWalls(const Dictionary& dict, Scene& scene) {
   } else {
     s.patch[0] = s.patch[1] = patchLabel(scene, d->getOrDefault<std::string>("patch", "sideWalls"), phi, *d);
   }
+  if (d->found("min")) s.min = readPoint2D(*d, "min");
+  if (d->found("max")) s.max = readPoint2D(*d, "max");
+  if (!(s.max.x() > s.min.x() && s.max.y() > s.min.y())) {
+    invalid(*d, d->found("max") ? "max" : "min",
+            fmt::format("the side walls' extent: max ({} {}) must exceed min ({} {}) in x and in y", s.max.x(),
+                        s.max.y(), s.min.x(), s.min.y()));
+  }
   s.density =
       d->getOrDefault("rho", scene.regions.empty() ? 1000.0 : scene.regions.front().density);
   if (!(s.density > 0)) invalid(*d, "rho", fmt::format("must be positive, found {}", s.density));

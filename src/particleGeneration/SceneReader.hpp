@@ -17,6 +17,8 @@
 //       patch       sideWalls;   // both walls' patch (default sideWalls), or one each:
 //       patches     (front back); //   the wall at z = 0, then at z = width
 //       rho         1379;        // default: first region's rho
+//       min (0 0 0); max (3 0.6 0); // optional: the part of the x-y section they cover
+//                                //   (default: the section's bounding box, walls included)
 //   }
 //   lattice         square;      // square (dx²) | hexagonal ((√3/2) dx² per site; 2D only)
 //   latticeOrigin   (0 0 0);     // a corner of a lattice cell: sites at origin + (i+½, j+½) cells

@@ -198,5 +198,33 @@ TEST(Extrusion, SideWallsCloseTheEnds) {
   }
 }
 
+// The side walls' `max (x y 0)`: they cover the section up to y = 0.3 only (the water's top),
+// 6 rows of wall particles at each end instead of 8, nothing above; the rest is unchanged.
+TEST(Extrusion, SideWallsCoverTheirExtentOnly) {
+  Scene s = tank(3, true);
+  s.sideWalls->max = Vec2(1e300, 0.3);
+  const GenerationResult clipped = generateParticles(s);
+  const GenerationResult full = generateParticles(tank(3, true));
+  long walls[2] = {0, 0}, dummies = 0, fullDummies = 0;
+  for (std::size_t i = 0; i < clipped.cloud.size(); ++i) {
+    if (clipped.cloud.patch[i] != 1) continue;
+    EXPECT_LE(clipped.cloud.positions[i].y(), 0.3 + 1e-12);
+    if (clipped.cloud.kind[i] == static_cast<label>(ParticleKind::wall))
+      ++walls[clipped.cloud.positions[i].z() > 0.1 ? 1 : 0];
+    else
+      ++dummies;
+  }
+  for (std::size_t i = 0; i < full.cloud.size(); ++i) {
+    if (full.cloud.patch[i] == 1 && full.cloud.kind[i] == static_cast<label>(ParticleKind::dummy)) ++fullDummies;
+  }
+  EXPECT_EQ(walls[0], 48);
+  EXPECT_EQ(walls[1], 48);
+  EXPECT_LT(dummies, fullDummies);
+  for (const ParticleKind k : {ParticleKind::material, ParticleKind::wall, ParticleKind::dummy}) {
+    for (const double z : extrusionLayers(s))
+      EXPECT_EQ(section(clipped.cloud, k, z), section(full.cloud, k, z)) << "z = " << z;
+  }
+}
+
 }  // namespace
 }  // namespace isph

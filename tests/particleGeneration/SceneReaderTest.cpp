@@ -265,6 +265,14 @@ TEST_F(SceneReader, ThreeDimensionalScene) {
   errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngel 10; }\n", "sideWalls", "frictionAngle");
   errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; patches (front); }\n", "sideWalls",
           "expected two names");
+  c.write("system/particleMeshDict", square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; max (3 0.6 0); }\n");
+  const Scene clipped = readScene(c.path());
+  EXPECT_DOUBLE_EQ(clipped.sideWalls->max.y(), 0.6);
+  EXPECT_LT(clipped.sideWalls->min.x(), -1e299);  // min not given: no clip below
+  errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; min (0 1 0); max (3 0.6 0); }\n",
+          "sideWalls", "must exceed min");
+  errorAt(square + "dimension 3;\nwidth 0.2;\nsideWalls { frictionAngle 10; max (3 0.6 0.1); }\n", "sideWalls",
+          "z must be 0");
 }
 
 TEST_F(SceneReader, ARegionOfPartOfTheWidth) {
