@@ -1,6 +1,7 @@
 #!/bin/bash
 # The stabilityMap benchmark's classifier on a tiny sweep (Allrun -smoke, on a copy): the base
-# point of the implicit method is reported against stable (below), at C = 2 it must blow up, on a base of
+# point of the implicit method is reported against stable (below), at C = 2 it must fail through
+# the walls (below), on a base of
 # 10 degrees (below the 20 degree slope) it must move (creeping), and the explicit plastic
 # term at 1e-4 of the default etaMax must creep; a stable row must carry its measures.
 #   testStabilityMap.sh <project dir> <build dir>
@@ -29,11 +30,20 @@ check() {
 }
 # The implicit base point was stable until the one granular scheme set of issue 48; with it the
 # layer's largest displacement at 1 s read 2.528 mm = 0.2528 dx against the stable line of
-# 0.25 dx (2026-12-06): reported beside the goal until it holds again (README, "The maps").
+# 0.25 dx (2026-12-06); since the wall safeguard holds concave corners (5a19b7e) 0.2283 dx,
+# stable, in one run: reported beside the goal until more runs show its noise (README).
 base=$(outcome implicit 0.2 1 30)
 if [ "$base" = stable ]; then echo "ok:   implicit, base point: stable"
 else echo "reported: implicit, base point: '$base' (goal: stable)"; fi
-check "implicit, C = 2" "$(outcome implicit 2 1 30)" "blew up"
+# C = 2 fails through the walls: it crossed them and a particle left the domain below the base
+# ('blew up') until the wall safeguard held concave corners (5a19b7e); since then the crossings
+# (390, the first beside the layer's end wall) are put back and the run ends 'penetrating'. Either is that failure;
+# stable, creeping or noisy is not.
+atTwo=$(outcome implicit 2 1 30)
+case "$atTwo" in
+"blew up" | penetrating) echo "ok:   implicit, C = 2: $atTwo (fails through the walls)" ;;
+*) echo "FAIL: implicit, C = 2: '$atTwo', expected 'blew up' or 'penetrating'"; fail=1 ;;
+esac
 check "implicit, base friction 10 < slope 20" "$(outcome implicit 0.2 1 10)" creeping
 check "explicit, C = 0.5, etaMax 1e-4 of the default" "$(outcome explicit 0.5 1e-4 30)" creeping
 # A stable run carries its measures: displacement below dx/4, a pressure spread.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 
 #include "isph/parallel/GhostExchange.hpp"
@@ -23,10 +24,12 @@ WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
 #pragma omp parallel for schedule(static) reduction(+ : moved, crossed) reduction(max : first)
   for (long a = 0; a < n; ++a) {
     const auto ua = static_cast<std::size_t>(a);
+    const auto begin = static_cast<std::size_t>(nl.start[ua]);
+    const auto end = static_cast<std::size_t>(nl.start[ua + 1]);
     double best = 1e300;
     std::size_t wall = 0;
-    for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
-      const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto b = static_cast<std::size_t>(nl.index[k]);
       if (!ps.isWall(b)) continue;
       const double r2 = (c.positions[ua] - c.positions[b]).squaredNorm();
       if (r2 < best) {
@@ -35,19 +38,42 @@ WallGuardResult guardWallPenetration(ParticleSystem& ps, double distance) {
       }
     }
     if (best == 1e300) continue;
-    const Vec3& normal = c.normal[wall];
-    const double dn = (c.positions[ua] - c.positions[wall]).dot(normal);
+    // The nearest wall particle's concave partner (the header): none where there is none.
+    const Vec3& nw = c.normal[wall];
+    const double reach = std::sqrt(best) + 0.5 * ps.dx;
+    double partnerR2 = reach * reach;
+    std::size_t partner = wall;
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto b = static_cast<std::size_t>(nl.index[k]);
+      if (!ps.isWall(b) || b == wall) continue;
+      const Vec3 wb = c.positions[b] - c.positions[wall];
+      if (wb.dot(nw) <= 0.1 * ps.dx || wb.dot(c.normal[b]) > 1e-9 * ps.dx) continue;
+      const double r2 = (c.positions[ua] - c.positions[b]).squaredNorm();
+      if (r2 < partnerR2) {
+        partnerR2 = r2;
+        partner = b;
+      }
+    }
     const bool own = ua < ps.ownMaterial();  // (parallel: count the own)
-    if (dn < 0 && own) {
+    bool behind = false, close = false;
+    const auto hold = [&](std::size_t w) {  // in front of w's plane by dmin
+      const Vec3& normal = c.normal[w];
+      const double dn = (c.positions[ua] - c.positions[w]).dot(normal);
+      behind = behind || dn < 0;
+      if (dn < dmin * (1.0 - 1e-9)) {
+        c.positions[ua] += (dmin - dn) * normal;
+        const double un = c.U[ua].dot(normal);
+        if (un < 0) c.U[ua] -= un * normal;
+        close = true;
+      }
+    };
+    hold(wall);
+    if (partner != wall) hold(partner);
+    if (behind && own) {
       ++crossed;
       first = std::max(first, -a - 1);  // the lowest index (max of negatives)
     }
-    if (dn < dmin * (1.0 - 1e-9)) {
-      c.positions[ua] += (dmin - dn) * normal;
-      const double un = c.U[ua].dot(normal);
-      if (un < 0) c.U[ua] -= un * normal;
-      moved += own;
-    }
+    moved += close && own;
   }
   exchangeGhosts(ps, c.positions);  // parallel: the step's last move
   exchangeGhosts(ps, c.U);

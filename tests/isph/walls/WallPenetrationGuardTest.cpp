@@ -3,6 +3,9 @@
 // beyond half a spacing from the wall surface is left alone; one closer is put back at half a
 // spacing and loses the velocity it had into the wall, keeping the rest; one behind the wall
 // surface is also a crossing, counted and described; a scene without walls has no guard.
+// At the concave corner of a floor and a wall x = 0 (the corner's particle the wall's), a
+// particle beside the corner, as near to the corner's particle as to the floor's first, is held
+// above the floor too; above a convex corner (a block's top and its face) nothing more is held.
 #include "isph/walls/WallPenetrationGuard.hpp"
 
 #include <gtest/gtest.h>
@@ -82,6 +85,63 @@ TEST(WallPenetrationGuard, NoWallsNoGuard) {
   const WallGuardResult r = guardWallPenetration(s.ps, 0.5);
   EXPECT_EQ(r.moved, 0u);
   EXPECT_EQ(s.ps.cloud.positions[0].y(), 0.2 * dx);
+}
+
+// The corner of a floor y = 0 (particles at x = dx, 2 dx, ..., normal +y) and a wall x = 0
+// (particles at y = 0, dx, 2 dx, ..., normal +x: the corner's particle is the wall's), or with
+// `convex`, a block's corner: its top y = 0 (x = 0, -dx, ..., normal +y, the corner's particle
+// the top's) and its face x = 0 (y = -dx, -2 dx, ..., normal +x); one material particle at `at`.
+struct CornerScene {
+  std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", 1.3 * dx, 2);
+  ParticleSystem ps;
+
+  CornerScene(const Vec3& at, const Vec3& u, bool convex = false) {
+    label id = 0;
+    ps.cloud.push_back(at, id++, u, 0, 0, ParticleKind::material, -1, Vec3::Zero(), 0.1);
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 wall = convex ? Vec3(0, -(i + 1) * dx, 0) : Vec3(0, i * dx, 0);
+      const Vec3 floor = convex ? Vec3(-i * dx, 0, 0) : Vec3((i + 1) * dx, 0, 0);
+      ps.cloud.push_back(wall, id++, Vec3::Zero(), 0, -1, ParticleKind::wall, 0, Vec3(1, 0, 0), 0.1);
+      ps.cloud.push_back(floor, id++, Vec3::Zero(), 0, -1, ParticleKind::wall, 1, Vec3(0, 1, 0), 0.1);
+    }
+    ps.dx = dx;
+    ps.nMaterial = 1;
+    ps.nWall = ps.cloud.size() - 1;
+    ps.neighbours.build(ps.cloud.positions, *kernel);
+  }
+};
+
+TEST(WallPenetrationGuard, HoldsAParticleBesideAConcaveCornerAboveTheFloor) {
+  // Half a spacing from the wall (where the guard holds it), sinking below the floor: as near to
+  // the corner's particle (0, 0) as to the floor's (dx, 0). Before the corner's partner was
+  // guarded it was left there (the wall's normal +x saw it half a spacing away) and sank on.
+  CornerScene s(Vec3(0.5 * dx, -0.1 * dx, 0), Vec3(0, -0.1, 0));
+  const WallGuardResult r = guardWallPenetration(s.ps, 0.5);
+  EXPECT_EQ(r.moved, 1u);
+  EXPECT_EQ(r.crossed, 1u) << "it was behind the floor";
+  EXPECT_NEAR(s.ps.cloud.positions[0].y(), 0.5 * dx, 1e-15) << "put back half a spacing above the floor";
+  EXPECT_NEAR(s.ps.cloud.positions[0].x(), 0.5 * dx, 1e-15) << "and still half a spacing from the wall";
+  EXPECT_NEAR(s.ps.cloud.U[0].y(), 0.0, 1e-15) << "its velocity into the floor is lost";
+}
+
+TEST(WallPenetrationGuard, HoldsAParticleInAConcaveCornerFromBothWalls) {
+  CornerScene s(Vec3(0.3 * dx, 0.2 * dx, 0), Vec3(-0.1, -0.1, 0));
+  const WallGuardResult r = guardWallPenetration(s.ps, 0.5);
+  EXPECT_EQ(r.moved, 1u);
+  EXPECT_EQ(r.crossed, 0u);
+  EXPECT_NEAR(s.ps.cloud.positions[0].x(), 0.5 * dx, 1e-15);
+  EXPECT_NEAR(s.ps.cloud.positions[0].y(), 0.5 * dx, 1e-15);
+  EXPECT_NEAR(s.ps.cloud.U[0].norm(), 0.0, 1e-15);
+}
+
+TEST(WallPenetrationGuard, AddsNothingAboveAConvexCorner) {
+  // Above the block's top, beyond its face: the top's plane alone; the face (its particles
+  // behind the top's plane) is no partner, and the particle stays where it is.
+  CornerScene s(Vec3(0.3 * dx, 0.6 * dx, 0), Vec3(-0.1, -0.1, 0), true);
+  const WallGuardResult r = guardWallPenetration(s.ps, 0.5);
+  EXPECT_EQ(r.moved, 0u);
+  EXPECT_EQ(s.ps.cloud.positions[0], Vec3(0.3 * dx, 0.6 * dx, 0));
+  EXPECT_EQ(s.ps.cloud.U[0], Vec3(-0.1, -0.1, 0));
 }
 
 }  // namespace
