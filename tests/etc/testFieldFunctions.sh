@@ -1,5 +1,6 @@
 #!/bin/bash
-# etc/FieldFunctions: materialParticles on a case written by particleMesh (ascii and binary).
+# etc/FieldFunctions: materialParticles and materialPoints on a case written by particleMesh
+# (ascii and binary; materialPoints on a 3D scene).
 # usage: testFieldFunctions.sh <project dir> <bin dir>
 set -u
 project=$1
@@ -30,6 +31,16 @@ check "four numbers a line: x y ux uy, inside the box, at rest" \
     'printf "%s\n" "$out" | awk "NF != 4 || \$1 < 0 || \$1 > 0.5 || \$2 < 0 || \$2 > 0.3 || \$3 != 0 || \$4 != 0 { bad = 1 } END { exit bad }"'
 check "a missing time is an error naming the field" \
     '! materialParticles 9 2> err && grep -q "no field 9/lagrangian/particles/kind" err'
+# materialPoints: the same box as a 3D scene, 0.2 m wide (two layers at z = 0.05 and 0.15).
+sed -i 's/^spacing 0.1;/spacing 0.1; dimension 3; width 0.2;/' system/particleMeshDict
+rm -rf 0 && "$bin/particleMesh" > log.particleMesh 2>&1 || { cat log.particleMesh; exit 1; }
+out=$(materialPoints 0)
+check "materialPoints: one line per sand particle of the 3D scene (2 x $n)" '[ "$(printf "%s\n" "$out" | wc -l)" -eq $((2 * n)) ]'
+check "materialPoints: x y z, inside the box, z in the two layers" \
+    'printf "%s\n" "$out" | awk "NF != 3 || \$1 < 0 || \$1 > 0.5 || \$2 < 0 || \$2 > 0.3 || (\$3 != 0.05 && \$3 != 0.15) { bad = 1 } END { exit bad }"'
+check "materialPoints: a missing time is an error naming the field" \
+    '! materialPoints 9 2> err && grep -q "materialPoints: no field 9/lagrangian/particles/kind" err'
+sed -i 's/ dimension 3; width 0.2;//' system/particleMeshDict
 sed -i 's/writeFormat ascii;/writeFormat binary;/' system/controlDict
 rm -rf 0 && "$bin/particleMesh" > log.particleMesh 2>&1
 if grep -q 'format *binary' 0/lagrangian/particles/positions 2>/dev/null
