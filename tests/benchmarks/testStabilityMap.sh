@@ -30,13 +30,13 @@ check() {
 }
 # The implicit base point was stable until the one granular scheme set of issue 48; with it the
 # layer's largest displacement at 1 s read 2.528 mm = 0.2528 dx against the stable line of
-# 0.25 dx (2026-12-06); since the wall safeguard holds concave corners (5a19b7e) 0.2283 dx,
+# 0.25 dx (2026-12-06); since the wall safeguard holds concave corners (1f40727) 0.2283 dx,
 # stable, in one run: reported beside the goal until more runs show its noise (README).
 base=$(outcome implicit 0.2 1 30)
 if [ "$base" = stable ]; then echo "ok:   implicit, base point: stable"
 else echo "reported: implicit, base point: '$base' (goal: stable)"; fi
 # C = 2 fails through the walls: it crossed them and a particle left the domain below the base
-# ('blew up') until the wall safeguard held concave corners (5a19b7e); since then the crossings
+# ('blew up') until the wall safeguard held concave corners (1f40727); since then the crossings
 # (390, the first beside the layer's end wall) are put back and the run ends 'penetrating'. Either is that failure;
 # stable, creeping or noisy is not.
 atTwo=$(outcome implicit 2 1 30)
