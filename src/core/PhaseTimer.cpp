@@ -36,14 +36,27 @@ double PhaseTimer::totalSeconds() const {
   return total;
 }
 
+namespace {
+
+std::string row(const std::string& name, double seconds, double total) {
+  return fmt::format("    {:<34} {:>10.3f} {:>6.1f}%\n", name, seconds, total > 0 ? 100.0 * seconds / total : 0.0);
+}
+
+}  // namespace
+
 std::string PhaseTimer::table() const {
   const double total = totalSeconds();
   std::string out = fmt::format("    {:<34} {:>10} {:>7}\n", "phase", "time [s]", "share");
-  for (std::size_t i = 0; i < names_.size(); ++i) {
-    out += fmt::format("    {:<34} {:>10.3f} {:>6.1f}%\n", names_[i], seconds_[i],
-                       total > 0 ? 100.0 * seconds_[i] / total : 0.0);
-  }
+  for (std::size_t i = 0; i < names_.size(); ++i) out += row(names_[i], seconds_[i], total);
   out += fmt::format("    {:<34} {:>10.3f}\n", "total", total);
+  return out;
+}
+
+std::string PhaseTimer::table(double loopSeconds) const {
+  std::string out = fmt::format("    {:<34} {:>10} {:>7}\n", "phase", "time [s]", "share");
+  for (std::size_t i = 0; i < names_.size(); ++i) out += row(names_[i], seconds_[i], loopSeconds);
+  out += row("other (in no phase)", loopSeconds - totalSeconds(), loopSeconds);
+  out += fmt::format("    {:<34} {:>10.3f}\n", "total", loopSeconds);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Wall-clock time spent in each named phase of a run (neighbour search, PPE solve, ...),
-// accumulated over all steps and printed as a table at the end of the run.
+// accumulated over all steps and printed as a table at the end of the run (against the time
+// loop's wall time: what no phase holds is a row of its own).
 //
 //   PhaseTimer timer;
 //   { auto scope = timer.scope("PPE solve"); solve(); }
@@ -31,8 +32,12 @@ class PhaseTimer {
   void add(const std::string& phase, double seconds);
   double seconds(const std::string& phase) const;
   double totalSeconds() const;
-  // "phase  seconds  share" lines.
+  // "phase  seconds  share" lines, shares of the phases' total.
   std::string table() const;
+  // The same against a loop that took `loopSeconds` on the wall: the time in no phase as the
+  // row "other (in no phase)", shares of the loop, and the loop as the total, so that the table
+  // adds up to the time the user waited.
+  std::string table(double loopSeconds) const;
 
  private:
   std::vector<std::string> names_;

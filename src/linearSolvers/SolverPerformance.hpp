@@ -16,6 +16,9 @@ struct SolverPerformance {
   // Wall-clock seconds spent building the solver's matrix (hypre IJ assembly, Eigen copy),
   // setting up the preconditioner or factorisation, and iterating. Not part of str().
   double assemblySeconds = 0, setupSeconds = 0, solveSeconds = 0;
+  // ... and checking it: the system's shape and values before the solve, and our own
+  // residual norms before and after (ControlledLinearSolver.hpp).
+  double checkSeconds = 0;
 
   std::string str() const;
 };

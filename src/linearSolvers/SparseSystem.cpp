@@ -13,8 +13,8 @@ namespace isph {
 
 namespace {
 
-// The checks that do not depend on where the columns lie: sizes, rowStart, finite values.
-void checkShape(const SparseSystem& A) {
+// The sizes of the arrays (O(1)).
+void checkSizes(const SparseSystem& A) {
   const int n = A.nRows();
   if (A.rowStart.empty() || A.rowStart.front() != 0) {
     fatalError("sparse system: rowStart must have nRows + 1 entries and start at 0");
@@ -29,31 +29,54 @@ void checkShape(const SparseSystem& A) {
     fatalError(fmt::format("sparse system: {} rows but the right-hand side has {} entries", n,
                            A.rhs.size()));
   }
-  for (int i = 0; i < n; ++i) {
-    if (A.rowStart[i + 1] < A.rowStart[i]) {
-      fatalError(fmt::format("sparse system: rowStart decreases at row {}", A.firstRow + i));
-    }
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
-      if (!std::isfinite(A.values[k])) {
-        fatalError(fmt::format("sparse system: A({}, {}) = {} is not finite", A.firstRow + i,
-                               A.columns[k], A.values[k]));
-      }
-    }
-    if (!std::isfinite(A.rhs[i])) {
-      fatalError(fmt::format("sparse system: b({}) = {} is not finite", A.firstRow + i, A.rhs[i]));
-    }
+}
+
+void checkRowStart(const SparseSystem& A, int i) {
+  if (A.rowStart[i + 1] < A.rowStart[i]) {
+    fatalError(fmt::format("sparse system: rowStart decreases at row {}", A.firstRow + i));
+  }
+  if (A.rowStart[i + 1] > A.rowStart.back()) {  // (before its entries are read)
+    fatalError(fmt::format("sparse system: row {} ends at entry {}, past the last ({})", A.firstRow + i,
+                           A.rowStart[i + 1], A.rowStart.back()));
+  }
+}
+
+void checkFinite(const SparseSystem& A, int i, int k) {
+  if (!std::isfinite(A.values[k])) {
+    fatalError(fmt::format("sparse system: A({}, {}) = {} is not finite", A.firstRow + i,
+                           A.columns[k], A.values[k]));
+  }
+}
+
+void checkFiniteRhs(const SparseSystem& A, int i) {
+  if (!std::isfinite(A.rhs[i])) {
+    fatalError(fmt::format("sparse system: b({}) = {} is not finite", A.firstRow + i, A.rhs[i]));
+  }
+}
+
+// The checks that do not depend on where the columns lie: sizes, rowStart, finite values.
+void checkShape(const SparseSystem& A) {
+  checkSizes(A);
+  for (int i = 0; i < A.nRows(); ++i) {
+    checkRowStart(A, i);
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) checkFinite(A, i, k);
+    checkFiniteRhs(A, i);
   }
 }
 
 }  // namespace
 
+// One pass over the entries (the shape's checks with the columns'): it runs before every solve,
+// a stick/slip pass's too (the two passes it took were 2 % of the barrier's time loop).
 void checkSparseSystem(const SparseSystem& A) {
-  checkShape(A);
+  checkSizes(A);
   const int n = A.nRows();
   // lastSeen[c] == i marks column c as used in row i: repeated columns are caught in O(nnz).
   std::vector<int> lastSeen(static_cast<std::size_t>(n), -1);
   for (int i = 0; i < n; ++i) {
+    checkRowStart(A, i);
     for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      checkFinite(A, i, k);
       const long c = A.columns[k] - A.firstRow;
       if (c < 0 || c >= n) {
         fatalError(fmt::format(
@@ -66,6 +89,7 @@ void checkSparseSystem(const SparseSystem& A) {
       }
       lastSeen[c] = i;
     }
+    checkFiniteRhs(A, i);
   }
 }
 

@@ -50,6 +50,10 @@ TEST(SparseSystem, ChecksCatchInconsistentArrays) {
   A.rowStart = {0, 3, 2};
   EXPECT_THROW(checkSparseSystem(A), FatalError);
   A = twoByTwo();
+  A.rowStart[1] = A.rowStart.back() + 1;  // row 0 past the entries: caught before they are read
+  A.rowStart.back() = static_cast<int>(A.values.size());
+  EXPECT_THROW(checkSparseSystem(A), FatalError);
+  A = twoByTwo();
   A.values[0] = std::nan("");
   EXPECT_THROW(checkSparseSystem(A), FatalError);
   A = twoByTwo();

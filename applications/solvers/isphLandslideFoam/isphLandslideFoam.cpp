@@ -90,22 +90,29 @@ void run(const isph::ArgList& args) {
   std::string lastWritten = time.timeName();
   const auto loopStart = std::chrono::steady_clock::now();
   const std::clock_t loopCpuStart = std::clock();
+  isph::PhaseTimer& timer = solver.timer();  // the loop's own phases beside the step's
   while (time.run()) {
-    const isph::TimeStepLimits limits = solver.nextDeltaT(time);
-    if (time.settings().adjustTimeStep) time.adjustDeltaT(limits.value());
-    ++time;
-    building.emplace(fmt::format("the time step to {} ({} particles)", time.timeName(), solver.particles().size()));
-    isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
-               time.settings().adjustTimeStep ? limits.limiting() : "fixed");
+    {
+      auto t = timer.scope("time step choice");
+      const isph::TimeStepLimits limits = solver.nextDeltaT(time);
+      if (time.settings().adjustTimeStep) time.adjustDeltaT(limits.value());
+      ++time;
+      building.emplace(fmt::format("the time step to {} ({} particles)", time.timeName(), solver.particles().size()));
+      isph::info("Time = {}  deltaT = {:.4g} ({})", time.timeName(), time.deltaT(),
+                 time.settings().adjustTimeStep ? limits.limiting() : "fixed");
+    }
     const isph::StepReport report = isph::stepWithRetry(time, solver);  // one retry at half the step
-    for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
-    if (!report.ppe.field.empty()) isph::logSolverPerformance(report.ppe);  // none with method wcsph
-    isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  collisions {}  wall safeguard {}  "
-               "wall crossings {}{}",
-               report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.collisions, report.wallSafeguard,
-               report.wallCrossings,
-               report.densityVariation >= 0 ? fmt::format("  max density variation {:.3g}%", 100 * report.densityVariation)
-                                            : std::string());
+    {
+      auto t = timer.scope("log");
+      for (const auto& perf : report.viscous) isph::logSolverPerformance(perf);
+      if (!report.ppe.field.empty()) isph::logSolverPerformance(report.ppe);  // none with method wcsph
+      isph::info("    Co = {:.3g}  maxU = {:.4g} m/s  free surface {}  max shift {:.3g} dx  collisions {}  wall safeguard {}  "
+                 "wall crossings {}{}",
+                 report.courant, report.maxSpeed, report.freeSurface, report.maxShift, report.collisions,
+                 report.wallSafeguard, report.wallCrossings,
+                 report.densityVariation >= 0 ? fmt::format("  max density variation {:.3g}%", 100 * report.densityVariation)
+                                              : std::string());
+    }
     fixedStep.check(time, report, lastWritten, progress);
     if (time.writeTime()) {
       solver.write(time);
@@ -118,17 +125,22 @@ void run(const isph::ArgList& args) {
     // (A material that slides on the walls exchanges no τ with them: its wall force is pressure
     // plus friction, PatchForces.hpp, and τ is not computed for it.)
     if (functions.anyDue(time)) {
+      auto t = timer.scope("function objects");
       const auto* friction = solver.wallFriction();
       const std::vector<char> owned = parallel ? isph::ownedMask(solver.particles()) : std::vector<char>();
       functions.execute(time, {.cloud = solver.particles().cloud, .tau = friction ? nullptr : solver.deviatoricStress(),
                                .kernel = &solver.kernel(), .neighbours = nullptr, .wallFriction = friction,
                                .gravity = &solver.gravity(), .owned = parallel ? &owned : nullptr});
     }
+    auto t = timer.scope("log");
     isph::info("{}\n", time.executionTimeLine());
     progress.update(time.value(), time.settings().endTime);
   }
   progress.finish(time.value(), time.settings().endTime);
-  functions.end(time);  // what is written from a whole history (patchForces: the filtered trace)
+  {
+    auto t = timer.scope("function objects");
+    functions.end(time);  // what is written from a whole history (patchForces: the filtered trace)
+  }
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
   if (const std::string above = fixedStep.summary(); !above.empty()) isph::info("{}", above);
   isph::info("{}", solver.safeguardSummary());
@@ -137,10 +149,10 @@ void run(const isph::ArgList& args) {
   if (const std::string amg = solver.preconditionerSummary(); !amg.empty()) isph::info("{}", amg);
   isph::info("Peak memory (resident): {:.1f} MB", isph::peakResidentMegabytes());
   // (ExecutionTime is CPU time, as in OpenFOAM: the sum over threads; benchmarks want the wall.)
-  isph::info("Time loop: wall {:.3f} s, CPU {:.3f} s",
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count(),
+  const double loopSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loopStart).count();
+  isph::info("Time loop: wall {:.3f} s, CPU {:.3f} s", loopSeconds,
              static_cast<double>(std::clock() - loopCpuStart) / CLOCKS_PER_SEC);
-  isph::info("Time spent per phase:\n{}", solver.timer().table());
+  isph::info("Time spent per phase:\n{}", timer.table(loopSeconds));
   if (isph::stopSignal::caught())
     isph::info("\nStopped by a signal at time {} (written and complete): continue from it with startFrom latestTime;",
                time.timeName());

@@ -167,7 +167,9 @@ std::vector<SolverPerformance> ImplicitViscousStep::solve(const ParticleSystem& 
     activeSet_.start(*friction, c.U, c.origId, n);
     lastPasses_ = 0;
     for (int pass = 0; pass < maxFrictionPasses_; ++pass) {
+      const auto coupledStart = std::chrono::steady_clock::now();
       assembleCoupled(ps.dimension, rhs);
+      assemblySeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - coupledStart).count();
       std::vector<double> xv(n * static_cast<std::size_t>(dim));
       for (std::size_t a = 0; a < n; ++a) {
         for (int d = 0; d < dim; ++d) xv[a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] = ustar[a][d];

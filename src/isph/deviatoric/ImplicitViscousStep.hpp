@@ -49,6 +49,8 @@ class ImplicitViscousStep {
                                        const std::vector<double>& eta, const WallFriction* friction, const Vec3& g,
                                        double dt, double h, std::vector<Vec3>& ustar);
 
+  // The last solve()'s own assembly: the scalar matrix and, each stick/slip pass, the coupled one
+  // (the solvers' hand-over to hypre is in their SolverPerformance).
   double assemblySeconds() const { return assemblySeconds_; }
   // The material particles were reordered: no solver keeps a preconditioner across it.
   void renumbered();

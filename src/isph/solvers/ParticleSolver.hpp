@@ -55,6 +55,7 @@ class ParticleSolver {
 
   const ParticleSystem& particles() const { return ps_; }
   const PhaseTimer& timer() const { return timer_; }
+  PhaseTimer& timer() { return timer_; }  // the time loop's own phases (time step, log, function objects)
   const Kernel& kernel() const { return *kernel_; }
   // The deviatoric stress τ that acted in the last step (zero for walls), or null when no
   // material has one; before the first step, that of the state read.

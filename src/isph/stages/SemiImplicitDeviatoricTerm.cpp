@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
+
 #include "isph/parallel/GhostExchange.hpp"
 
 namespace isph {
@@ -27,15 +29,21 @@ std::string SemiImplicitDeviatoricTerm::describe() const {
 
 double SemiImplicitDeviatoricTerm::predict(StepContext& c, double dt, long stepsTaken, std::vector<Vec3>& ustar,
                                            StepReport& report) {
+  const auto start = std::chrono::steady_clock::now();
   const auto perf = viscous_->solve(c.ps, c.materials, c.viscousStress.eta(), &c.friction, c.g, dt, c.kernel.h(),
                                     ustar);
   exchangeGhosts(c.ps, ustar);  // parallel: solved for the own particles
   report.viscous.insert(report.viscous.end(), perf.begin(), perf.end());
+  // The solve's time by part; what is in none of them (the stick/slip states classified after
+  // each pass, the warm start, the ghosts) and the friction's traction below: "viscous stick/slip and friction".
+  double accounted = viscous_->assemblySeconds();
   c.timer.add("viscous assembly", viscous_->assemblySeconds());
-  for (const auto& p : report.viscous) {
+  for (const auto& p : perf) {
     c.timer.add("viscous assembly", p.assemblySeconds);
     c.timer.add("viscous setup", p.setupSeconds);
     c.timer.add("viscous solve", p.solveSeconds);
+    c.timer.add("viscous checks", p.checkSeconds);
+    accounted += p.assemblySeconds + p.setupSeconds + p.solveSeconds + p.checkSeconds;
   }
   if (c.friction.active()) {
     std::vector<Vec3> force = viscous_->frictionForce();
@@ -45,6 +53,7 @@ double SemiImplicitDeviatoricTerm::predict(StepContext& c, double dt, long steps
     }
     c.wallFriction = c.friction.wallTraction(c.ps, force);
   }
+  c.timer.add("viscous stick/slip and friction", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - accounted);
   auto t = c.timer.scope("rheology");
   c.viscousStress.keepActing(&ustar, stepsTaken);  // u* with its ghosts (exchanged above)
   return 0;
