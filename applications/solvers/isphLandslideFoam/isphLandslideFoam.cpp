@@ -144,7 +144,7 @@ void run(const isph::ArgList& args) {
   isph::info("Wall crossings in the run: {}", solver.wallCrossings());
   if (const std::string above = fixedStep.summary(); !above.empty()) isph::info("{}", above);
   isph::info("{}", solver.safeguardSummary());
-  isph::info("Mean neighbours per particle (last step): {:.1f}", isph::meanNeighbours(solver.particles()));
+  isph::info("Mean neighbours per material particle (last step): {:.1f}", isph::meanNeighbours(solver.particles()));
   if (solver.distributed()) isph::info("{}", solver.distributed()->balanceSummary());
   if (const std::string amg = solver.preconditionerSummary(); !amg.empty()) isph::info("{}", amg);
   isph::info("Peak memory (resident): {:.1f} MB", isph::peakResidentMegabytes());

@@ -26,21 +26,22 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
   divR_.assign(n, 0.0);
   const auto& x = ps.cloud.positions;
   const auto& nl = ps.neighbours;
-  const long active = static_cast<long>(ps.nMaterial + ps.nWall);
+  // Wall particles: 1 where no material is within the support (an inactive wall); their rows
+  // hold the material only (NeighbourList.hpp). Dummies: 0.
+  for (std::size_t a = ps.wallBegin(); a < ps.dummyBegin(); ++a) flags_[a] = nl.start[a + 1] == nl.start[a];
+  const long active = static_cast<long>(ps.nMaterial);
   long surface = 0;
 #pragma omp parallel for schedule(static) reduction(+ : surface)
   for (long a = 0; a < active; ++a) {
     const auto ua = static_cast<std::size_t>(a);
     double div = 0;
     Vec3 gradC = Vec3::Zero();
-    bool touchesMaterial = false;
     for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
       const auto kk = static_cast<std::size_t>(k);
       const auto b = static_cast<std::size_t>(nl.index[kk]);
       const Vec3 xab = x[ua] - x[b];
       div -= ps.volume[b] * nl.F[kk] * xab.squaredNorm();
       gradC += ps.volume[b] * nl.F[kk] * xab;
-      touchesMaterial = touchesMaterial || ps.isMaterial(b);
     }
     divR_[ua] = div;
     const double count = double(nl.start[ua + 1] - nl.start[ua]);
@@ -68,7 +69,7 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
       for (long k = nl.start[ua]; k < nl.start[ua + 1]; ++k) {
         const auto b = static_cast<std::size_t>(nl.index[static_cast<std::size_t>(k)]);
         const int direction = latticeDirection(x[b] - x[ua]);
-        if (ps.isMaterial(ua) && !ps.isMaterial(b)) {
+        if (!ps.isMaterial(b)) {
           const Vec3& n = ps.isWall(b) ? ps.cloud.normal[b] : ps.cloud.normal[static_cast<std::size_t>(ps.parentWall[b])];
           const Vec3 axis(direction % 3 - 1, direction / 3 % 3 - 1, direction / 9 - 1);
           if (axis.dot(n) > -1e-9) continue;
@@ -85,12 +86,8 @@ void FreeSurfaceDetector::detect(const ParticleSystem& ps) {
         }
       }
     }
-    if (ps.isMaterial(ua)) {
-      flags_[ua] = isSurface;
-      surface += isSurface && ua < ps.ownMaterial();  // (parallel: the own particles)
-    } else {
-      flags_[ua] = isSurface || !touchesMaterial;
-    }
+    flags_[ua] = isSurface;
+    surface += isSurface && ua < ps.ownMaterial();  // (parallel: the own particles)
   }
   nSurface_ = sumOverRanks(static_cast<std::size_t>(surface));
   exchangeGhosts(ps, flags_);  // parallel: a ghost's flag from its whole neighbourhood, on its rank

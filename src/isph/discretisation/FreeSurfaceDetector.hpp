@@ -30,7 +30,8 @@ class FreeSurfaceDetector {
   FreeSurfaceDetector(double threshold, double gradientThreshold, double minNeighbourFraction,
                       int fullNeighbourCount, double h);
 
-  // Flags for all particles: 1 = free surface or inactive wall, 0 = interior (dummies: 0).
+  // Flags for all particles: material 1 = free surface, 0 = interior; wall particles 1 where no
+  // material is within their support (inactive); dummies 0.
   void detect(const ParticleSystem& ps);
 
   const std::vector<char>& flags() const { return flags_; }  // (parallel: the owners' flags at ghosts)

@@ -14,7 +14,7 @@ void KernelGradientCorrection::update(const ParticleSystem& ps, bool enabled, do
   const auto& x = ps.cloud.positions;
   const auto& nl = ps.neighbours;
   const int dim = ps.dimension;
-  const long active = static_cast<long>(ps.nMaterial + ps.nWall);
+  const long active = static_cast<long>(ps.nMaterial);
   long fallbacks = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (long a = 0; a < active; ++a) {

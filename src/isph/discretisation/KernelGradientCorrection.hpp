@@ -14,8 +14,9 @@ namespace isph {
 
 class KernelGradientCorrection {
  public:
-  // Computes L_a for the material and wall particles (identity for dummies, or for all
-  // when `enabled` is false).
+  // Computes L_a for the material particles, identity for the wall and dummy particles (whose
+  // gradients nothing takes, and whose neighbour rows hold the material only: NeighbourList.hpp),
+  // or for all when `enabled` is false.
   void update(const ParticleSystem& ps, bool enabled, double minDeterminant);
 
   const Eigen::Matrix3d& operator[](std::size_t a) const { return L_[a]; }

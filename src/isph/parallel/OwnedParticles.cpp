@@ -1,5 +1,7 @@
 #include "isph/parallel/OwnedParticles.hpp"
 
+#include <algorithm>
+
 #include "parallel/ParticleFields.hpp"
 #include "parallel/Reduce.hpp"
 
@@ -8,8 +10,7 @@ namespace isph {
 double meanNeighbours(const ParticleSystem& ps) {
   long pairs = 0, particles = 0;
   const auto& nl = ps.neighbours;
-  for (std::size_t a = 0; a < nl.nParticles(); ++a) {
-    if (!ps.isOwned(a)) continue;
+  for (std::size_t a = 0; a < std::min(nl.nParticles(), ps.ownMaterial()); ++a) {
     pairs += nl.start[a + 1] - nl.start[a];
     ++particles;
   }

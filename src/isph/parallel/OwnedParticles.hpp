@@ -9,7 +9,9 @@
 
 namespace isph {
 
-// The mean number of neighbours of the own particles over all ranks (collective).
+// The mean number of neighbours of the own material particles over all ranks (collective): the
+// rows the method works on (a wall or dummy particle's holds its material neighbours only,
+// NeighbourList.hpp).
 double meanNeighbours(const ParticleSystem& ps);
 
 // Which particles are this rank's own (1) or ghosts (0); all 1 in a serial run.

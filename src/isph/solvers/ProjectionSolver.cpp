@@ -94,7 +94,7 @@ void ProjectionSolver::findNeighbours(const Time& time) {
     ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
     deviatoric_->renumbered();
   }
-  ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+  ps_.neighbours.build(ps_.cloud.positions, *kernel_, ps_.nMaterial);  // walls: their material neighbours
 }
 
 void ProjectionSolver::correctKernels(StepReport& report) {

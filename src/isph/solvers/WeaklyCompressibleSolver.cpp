@@ -90,7 +90,7 @@ StepReport WeaklyCompressibleSolver::step(const Time& time) {
       wcsph_->permute(order);
       if (elastic_) elastic_->permute(order);
     }
-    ps_.neighbours.build(ps_.cloud.positions, *kernel_);
+    ps_.neighbours.build(ps_.cloud.positions, *kernel_, ps_.nMaterial);  // walls: their material neighbours
   }
   {
     auto t = timer_.scope("kernel and corrections");  // the strain rate's corrected gradients

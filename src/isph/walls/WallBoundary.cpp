@@ -31,7 +31,7 @@ void WallBoundary::prepare(const std::vector<char>& surface) {
 void WallBoundary::update(const std::vector<Vec3>& ustar, double dt) { updateWallPressure(ps_, ustar, g_, dt); }
 
 void WallBoundary::settle(const Kernel& kernel, const std::vector<Vec3>& ustar) {
-  ps_.neighbours.build(ps_.cloud.positions, kernel);
+  ps_.neighbours.build(ps_.cloud.positions, kernel, ps_.nMaterial);
   prepare(std::vector<char>(ps_.nMaterial, 0));
   update(ustar, 1.0);
 }

@@ -7,6 +7,15 @@
 // For particle a, pairs k in [start[a], start[a+1]): b = index[k],
 //   W_ab = W[k],  ∇_a W_ab = F[k] * (x_a − x_b)   (F = W'(r)/r ≤ 0).
 // The particle itself is not in its own list; its self-contribution W(0) is kernel().W(0).
+//
+// Given `nMaterial` (particles [0, nMaterial) are material, the rest wall and dummy particles,
+// ParticleSystem.hpp), the rows of the others hold their material neighbours only, in the
+// order of a whole row: a wall or dummy particle takes from the material (its pressure, the
+// friction, the wall stress) and nothing from another wall, and the method reads no other
+// pair (doc/notes/stepCost.md). In a 3D slab that is 71 % of the particles and most of the
+// pairs.
+#include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "core/Types.hpp"
@@ -17,7 +26,10 @@ namespace isph {
 class NeighbourList {
  public:
   // Pairs closer than the kernel support. Parallel over particles (OpenMP), deterministic.
-  void build(const std::vector<Vec3>& positions, const Kernel& kernel);
+  // Rows of particles from `nMaterial` on: their material neighbours only (every row whole by
+  // default).
+  void build(const std::vector<Vec3>& positions, const Kernel& kernel,
+             std::size_t nMaterial = std::numeric_limits<std::size_t>::max());
 
   std::size_t nParticles() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t nPairs() const { return index.size(); }

@@ -48,17 +48,17 @@ TEST(OwnedParticles, ASerialRunWritesTheWholeFieldAndCloudInOrder) {
 }
 
 // Counted here by brute force: the other particles within the kernel support (the list leaves
-// a particle itself out), averaged over the block; a count of integers, so exact.
+// a particle itself out), averaged over the block's material; a count of integers, so exact.
 TEST(OwnedParticles, MeanNeighboursCountsTheOtherParticlesWithinTheSupport) {
   const ParticleSystem ps = block();
   const auto kernel = makeKernel("WendlandC2", 1.3 * dx, 2);
   long pairs = 0;
-  for (std::size_t a = 0; a < ps.size(); ++a) {
+  for (std::size_t a = 0; a < ps.nMaterial; ++a) {
     for (std::size_t b = 0; b < ps.size(); ++b) {
       if (b != a && (ps.cloud.positions[a] - ps.cloud.positions[b]).norm() < kernel->supportRadius()) ++pairs;
     }
   }
-  EXPECT_DOUBLE_EQ(meanNeighbours(ps), static_cast<double>(pairs) / static_cast<double>(ps.size()));
+  EXPECT_DOUBLE_EQ(meanNeighbours(ps), static_cast<double>(pairs) / static_cast<double>(ps.nMaterial));
 }
 
 }  // namespace

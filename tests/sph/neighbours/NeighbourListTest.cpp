@@ -54,6 +54,43 @@ TEST(NeighbourList, MatchesBruteForceIn3D) {
   expectBruteForcePairs(randomPoints(1000, 0.3, 3, 2), *kernel);
 }
 
+// Given the material count, a material particle's row is whole and another's (a wall's or a
+// dummy's) holds its material neighbours only, in the order they have in the whole row, with
+// the same kernel values: every sum a wall particle takes over its material is unchanged to the
+// last bit.
+TEST(NeighbourList, RowsPastTheMaterialHoldTheirMaterialNeighboursInTheWholeRowsOrder) {
+  const auto kernel = makeKernel("WendlandC2", 0.013, 2);
+  const std::vector<Vec3> x = randomPoints(1500, 0.3, 2, 3);
+  const std::size_t nMaterial = 900;
+  NeighbourList whole, cut;
+  whole.build(x, *kernel);
+  cut.build(x, *kernel, nMaterial);
+  ASSERT_EQ(cut.nParticles(), x.size());
+  std::size_t wallRowsWithMaterial = 0, pairsLeftOut = 0;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    std::vector<int> expected;
+    std::vector<double> W, F;
+    for (long k = whole.start[a]; k < whole.start[a + 1]; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      if (a < nMaterial || static_cast<std::size_t>(whole.index[kk]) < nMaterial) {
+        expected.push_back(whole.index[kk]);
+        W.push_back(whole.W[kk]);
+        F.push_back(whole.F[kk]);
+      } else {
+        ++pairsLeftOut;
+      }
+    }
+    const auto first = static_cast<std::size_t>(cut.start[a]), last = static_cast<std::size_t>(cut.start[a + 1]);
+    EXPECT_EQ(std::vector<int>(cut.index.begin() + first, cut.index.begin() + last), expected) << "particle " << a;
+    EXPECT_EQ(std::vector<double>(cut.W.begin() + first, cut.W.begin() + last), W) << "particle " << a;
+    EXPECT_EQ(std::vector<double>(cut.F.begin() + first, cut.F.begin() + last), F) << "particle " << a;
+    wallRowsWithMaterial += a >= nMaterial && last > first;
+  }
+  EXPECT_GT(wallRowsWithMaterial, 100u);  // (the case is not empty: rows past the material with material in them)
+  EXPECT_GT(pairsLeftOut, 1000u);         // ... and pairs among the others, left out
+  EXPECT_EQ(cut.nPairs() + pairsLeftOut, whole.nPairs());
+}
+
 TEST(NeighbourList, SquareLatticeHas20NeighboursInTheInterior) {
   const double dx = 0.01;
   std::vector<Vec3> x;
