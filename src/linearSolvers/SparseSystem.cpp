@@ -54,16 +54,6 @@ void checkFiniteRhs(const SparseSystem& A, int i) {
   }
 }
 
-// The checks that do not depend on where the columns lie: sizes, rowStart, finite values.
-void checkShape(const SparseSystem& A) {
-  checkSizes(A);
-  for (int i = 0; i < A.nRows(); ++i) {
-    checkRowStart(A, i);
-    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) checkFinite(A, i, k);
-    checkFiniteRhs(A, i);
-  }
-}
-
 }  // namespace
 
 // One pass over the entries (the shape's checks with the columns'): it runs before every solve,
@@ -94,26 +84,46 @@ void checkSparseSystem(const SparseSystem& A) {
 }
 
 void checkDistributedSparseSystem(const SparseSystem& A) {
-  checkShape(A);
+  checkSizes(A);
   const GlobalNumbering rows = GlobalNumbering::of(A.nRows());
   if (A.firstRow != rows.first) {
     fatalError(fmt::format("distributed sparse system: this rank's rows start at {}, but the ranks before it "
                            "hold {} rows",
                            A.firstRow, rows.first));
   }
-  std::vector<GlobalIndex> columns;
-  for (int i = 0; i < A.nRows(); ++i) {
-    columns.assign(A.columns.begin() + A.rowStart[i], A.columns.begin() + A.rowStart[i + 1]);
-    std::sort(columns.begin(), columns.end());
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-      if (columns[k] < 0 || columns[k] >= rows.nGlobal) {
+  // One pass, as checkSparseSystem: this rank's columns marked by row (lastSeen), the few of
+  // other ranks' rows (a row beside the cut) sorted apart. (A sort of every row made the checks
+  // slower on two ranks than on one: 0.32 s against 0.25 s in the scaling benchmark's 40k column.)
+  const int n = A.nRows();
+  std::vector<int> lastSeen(static_cast<std::size_t>(n), -1);
+  std::vector<GlobalIndex> others;
+  for (int i = 0; i < n; ++i) {
+    checkRowStart(A, i);
+    others.clear();
+    for (int k = A.rowStart[i]; k < A.rowStart[i + 1]; ++k) {
+      checkFinite(A, i, k);
+      const GlobalIndex column = A.columns[k];
+      if (column < 0 || column >= rows.nGlobal) {
         fatalError(fmt::format("distributed sparse system: row {} has column {} outside the rows [0, {})",
-                               A.firstRow + i, columns[k], rows.nGlobal));
+                               A.firstRow + i, column, rows.nGlobal));
       }
-      if (k > 0 && columns[k] == columns[k - 1]) {
-        fatalError(fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, columns[k]));
+      const long c = column - A.firstRow;
+      if (c < 0 || c >= n) {
+        others.push_back(column);
+        continue;
+      }
+      if (lastSeen[c] == i) {
+        fatalError(fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, column));
+      }
+      lastSeen[c] = i;
+    }
+    std::sort(others.begin(), others.end());
+    for (std::size_t k = 1; k < others.size(); ++k) {
+      if (others[k] == others[k - 1]) {
+        fatalError(fmt::format("sparse system: row {} has column {} twice", A.firstRow + i, others[k]));
       }
     }
+    checkFiniteRhs(A, i);
   }
 }
 

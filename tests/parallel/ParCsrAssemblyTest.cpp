@@ -115,4 +115,20 @@ TEST(ParCsrAssembly, BlocksThatDoNotFollowOneAnotherAreAnErrorOnEveryRank) {
   EXPECT_THROW(checkDistributedSparseSystem(outside), FatalError);
 }
 
+// A column twice in a row is an error whether it is this rank's row or another's (those are
+// checked apart: a row beside the cut between the ranks).
+TEST(ParCsrAssembly, AColumnTwiceInARowIsAnErrorOfThisRanksColumnsAndOfAnothers) {
+  const SparseSystem whole = test::latticePoisson(10, test::Stencil::FivePoint);
+  const GlobalNumbering rows = shareOf(whole.nRows());
+  const SparseSystem mine = block(whole, rows.first, rows.nLocal);
+  EXPECT_NO_THROW(checkDistributedSparseSystem(mine));
+  for (const GlobalIndex twice : {static_cast<GlobalIndex>(rows.first),                  // this rank's
+                                  static_cast<GlobalIndex>((rows.first + rows.nLocal) % rows.nGlobal)}) {  // another's, or (one rank) the first
+    SparseSystem repeated = mine;
+    repeated.columns[0] = twice;
+    repeated.columns[1] = twice;
+    EXPECT_THROW(checkDistributedSparseSystem(repeated), FatalError) << "column " << twice;
+  }
+}
+
 }  // namespace
