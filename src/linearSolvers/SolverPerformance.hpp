@@ -19,6 +19,7 @@ struct SolverPerformance {
   // ... and checking it: the system's shape and values before the solve, and our own
   // residual norms before and after (ControlledLinearSolver.hpp).
   double checkSeconds = 0;
+  double seconds() const { return assemblySeconds + setupSeconds + solveSeconds + checkSeconds; }
 
   std::string str() const;
 };

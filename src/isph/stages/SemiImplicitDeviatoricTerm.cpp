@@ -43,7 +43,7 @@ double SemiImplicitDeviatoricTerm::predict(StepContext& c, double dt, long steps
     c.timer.add("viscous setup", p.setupSeconds);
     c.timer.add("viscous solve", p.solveSeconds);
     c.timer.add("viscous checks", p.checkSeconds);
-    accounted += p.assemblySeconds + p.setupSeconds + p.solveSeconds + p.checkSeconds;
+    accounted += p.seconds();
   }
   if (c.friction.active()) {
     std::vector<Vec3> force = viscous_->frictionForce();
