@@ -36,8 +36,8 @@ struct ParticleSystem {
   // rank's own first, then its ghosts, copies of other ranks' particles within the kernel
   // support: material [0, nOwnedMaterial) own and [nOwnedMaterial, nMaterial) ghosts, walls
   // [wallBegin(), wallBegin() + nOwnedWall) own, dummies likewise. A loop over the material
-  // computes the ghosts' entries too (from their cut-off neighbourhoods: wrong), and
-  // exchangeGhosts (isph/parallel/GhostExchange.hpp) then gives them their owners' values before
+  // computes the ghosts' entries too (from their empty neighbour rows, NeighbourList.hpp:
+  // wrong), and exchangeGhosts (isph/parallel/GhostExchange.hpp) then gives them their owners' values before
   // a pair loop reads them. The linear systems hold the own material particles' rows, numbered
   // from firstRow over all ranks (globalRow). In a serial run everything is owned, firstRow 0.
   std::size_t nOwnedMaterial = 0, nOwnedWall = 0, nOwnedDummy = 0;  // (set with halo)

@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/Log.hpp"
+#include "isph/parallel/OwnedParticles.hpp"
 #include "isph/deviatoric/ElasticPlasticStress.hpp"
 
 namespace isph {
@@ -94,7 +95,9 @@ void ProjectionSolver::findNeighbours(const Time& time) {
     ppe_->renumbered();  // a kept AMG hierarchy (reuseSetup) is for the old numbering
     deviatoric_->renumbered();
   }
-  ps_.neighbours.build(ps_.cloud.positions, *kernel_, ps_.nMaterial);  // walls: their material neighbours
+  // Walls: their material neighbours; ghosts (parallel): no row of their own.
+  const std::vector<char> owned = distributed_ ? ownedMask(ps_) : std::vector<char>();
+  ps_.neighbours.build(ps_.cloud.positions, *kernel_, ps_.nMaterial, distributed_ ? &owned : nullptr);
 }
 
 void ProjectionSolver::correctKernels(StepReport& report) {

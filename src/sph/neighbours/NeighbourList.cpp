@@ -34,7 +34,8 @@ void forCandidates(const CellGrid& grid, const Vec3& x, F&& f) {
 
 }  // namespace
 
-void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kernel, std::size_t nMaterial) {
+void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kernel, std::size_t nMaterial,
+                          const std::vector<char>* withRow) {
   const double support = kernel.supportRadius();
   const double support2 = support * support;
   const CellGrid grid(positions, support, kernel.dimension());
@@ -43,6 +44,7 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   // Whether b is in a's row: a material particle's row holds every neighbour, another's the
   // material ones (filtered among the candidates, so that they keep the whole row's order).
   const auto kept = [materialEnd](long a, long b) { return b != a && (a < materialEnd || b < materialEnd); };
+  const auto hasRow = [withRow](long a) { return !withRow || (*withRow)[static_cast<std::size_t>(a)] != 0; };
 
   // Pass 1: count; pass 2: fill. Each particle writes only its own row.
   std::vector<long> count(static_cast<std::size_t>(n) + 1, 0);
@@ -50,7 +52,7 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   for (long a = 0; a < n; ++a) {
     const Vec3& xa = positions[static_cast<std::size_t>(a)];
     long c = 0;
-    forCandidates(grid, xa, [&](int b) {
+    if (hasRow(a)) forCandidates(grid, xa, [&](int b) {
       if (kept(a, b) && (xa - positions[static_cast<std::size_t>(b)]).squaredNorm() < support2) ++c;
     });
     count[static_cast<std::size_t>(a) + 1] = c;
@@ -66,7 +68,7 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   for (long a = 0; a < n; ++a) {
     const Vec3& xa = positions[static_cast<std::size_t>(a)];
     std::size_t k = static_cast<std::size_t>(start[static_cast<std::size_t>(a)]);
-    forCandidates(grid, xa, [&](int b) {
+    if (hasRow(a)) forCandidates(grid, xa, [&](int b) {
       if (!kept(a, b)) return;
       const double r2 = (xa - positions[static_cast<std::size_t>(b)]).squaredNorm();
       if (r2 >= support2) return;

@@ -27,9 +27,12 @@ class NeighbourList {
  public:
   // Pairs closer than the kernel support. Parallel over particles (OpenMP), deterministic.
   // Rows of particles from `nMaterial` on: their material neighbours only (every row whole by
-  // default).
+  // default). With `withRow`, a particle whose entry is 0 gets an empty row (a parallel run's
+  // ghosts: every value a ghost's row would give is exchanged from its owner or not read,
+  // doc/notes/stepCost.md); it stays a neighbour in the other rows.
   void build(const std::vector<Vec3>& positions, const Kernel& kernel,
-             std::size_t nMaterial = std::numeric_limits<std::size_t>::max());
+             std::size_t nMaterial = std::numeric_limits<std::size_t>::max(),
+             const std::vector<char>* withRow = nullptr);
 
   std::size_t nParticles() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t nPairs() const { return index.size(); }

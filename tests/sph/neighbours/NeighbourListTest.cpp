@@ -91,6 +91,33 @@ TEST(NeighbourList, RowsPastTheMaterialHoldTheirMaterialNeighboursInTheWholeRows
   EXPECT_EQ(cut.nPairs() + pairsLeftOut, whole.nPairs());
 }
 
+// A particle marked without a row (a parallel run's ghost) has an empty row and stays in the
+// others' rows, which are as they would be with every row built.
+TEST(NeighbourList, AParticleWithoutARowStaysANeighbourOfTheOthers) {
+  const auto kernel = makeKernel("WendlandC2", 0.013, 2);
+  const std::vector<Vec3> x = randomPoints(1500, 0.3, 2, 4);
+  std::vector<char> withRow(x.size(), 1);
+  for (std::size_t a = 0; a < x.size(); a += 3) withRow[a] = 0;
+  NeighbourList whole, some;
+  whole.build(x, *kernel, 900);
+  some.build(x, *kernel, 900, &withRow);
+  std::size_t seenInOthers = 0;
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    const auto first = static_cast<std::size_t>(some.start[a]), last = static_cast<std::size_t>(some.start[a + 1]);
+    if (!withRow[a]) {
+      EXPECT_EQ(first, last) << "particle " << a;
+      continue;
+    }
+    const auto wFirst = static_cast<std::size_t>(whole.start[a]), wLast = static_cast<std::size_t>(whole.start[a + 1]);
+    EXPECT_EQ(std::vector<int>(some.index.begin() + first, some.index.begin() + last),
+              std::vector<int>(whole.index.begin() + wFirst, whole.index.begin() + wLast)) << "particle " << a;
+    EXPECT_EQ(std::vector<double>(some.F.begin() + first, some.F.begin() + last),
+              std::vector<double>(whole.F.begin() + wFirst, whole.F.begin() + wLast)) << "particle " << a;
+    for (std::size_t k = first; k < last; ++k) seenInOthers += !withRow[static_cast<std::size_t>(some.index[k])];
+  }
+  EXPECT_GT(seenInOthers, 1000u);  // the rowless particles are still found as neighbours
+}
+
 TEST(NeighbourList, SquareLatticeHas20NeighboursInTheInterior) {
   const double dx = 0.01;
   std::vector<Vec3> x;
