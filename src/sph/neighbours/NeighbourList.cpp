@@ -8,32 +8,6 @@
 
 namespace isph {
 
-namespace {
-
-// Calls f(b) for every particle b in the 3^d cells around particle a's cell.
-template <class F>
-void forCandidates(const CellGrid& grid, const Vec3& x, F&& f) {
-  const auto c = grid.cellOf(x);
-  const auto& n = grid.counts();
-  const int dz = grid.dimension() == 3 ? 1 : 0;
-  for (int k = c[2] - dz; k <= c[2] + dz; ++k) {
-    if (k < 0 || k >= n[2]) continue;
-    for (int j = c[1] - 1; j <= c[1] + 1; ++j) {
-      if (j < 0 || j >= n[1]) continue;
-      const int i0 = std::max(c[0] - 1, 0), i1 = std::min(c[0] + 1, n[0] - 1);
-      // Cells i0..i1 of one row are contiguous in the sorted array.
-      const long first = grid.index({i0, j, k}), last = grid.index({i1, j, k});
-      const int* sorted = grid.sorted().data();
-      for (int s = grid.cellStart()[static_cast<std::size_t>(first)];
-           s < grid.cellStart()[static_cast<std::size_t>(last) + 1]; ++s) {
-        f(sorted[s]);
-      }
-    }
-  }
-}
-
-}  // namespace
-
 void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kernel, std::size_t nMaterial,
                           const std::vector<char>* withRow) {
   const double support = kernel.supportRadius();
@@ -52,7 +26,7 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   for (long a = 0; a < n; ++a) {
     const Vec3& xa = positions[static_cast<std::size_t>(a)];
     long c = 0;
-    if (hasRow(a)) forCandidates(grid, xa, [&](int b) {
+    if (hasRow(a)) grid.forEachCandidate(xa, [&](int b) {
       if (kept(a, b) && (xa - positions[static_cast<std::size_t>(b)]).squaredNorm() < support2) ++c;
     });
     count[static_cast<std::size_t>(a) + 1] = c;
@@ -68,7 +42,7 @@ void NeighbourList::build(const std::vector<Vec3>& positions, const Kernel& kern
   for (long a = 0; a < n; ++a) {
     const Vec3& xa = positions[static_cast<std::size_t>(a)];
     std::size_t k = static_cast<std::size_t>(start[static_cast<std::size_t>(a)]);
-    if (hasRow(a)) forCandidates(grid, xa, [&](int b) {
+    if (hasRow(a)) grid.forEachCandidate(xa, [&](int b) {
       if (!kept(a, b)) return;
       const double r2 = (xa - positions[static_cast<std::size_t>(b)]).squaredNorm();
       if (r2 >= support2) return;
