@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# sampleForces, toVTK and sampleLithostatic as a user runs them: outputs, -plot with and without gnuplot, and
+# sampleForces, toVTK, sampleLithostatic and sampleWallFilm as a user runs them: outputs, -plot with and without gnuplot, and
 # errors that name the file, line and keyword. Usage: testPostProcessingUtilities.sh <bindir> <cases>
 set -u
 bin=$1
@@ -87,6 +87,27 @@ check "a negative rho is an error naming it, the file and the line" \
 rm "$work/tank/system/sampleLithostaticDict"
 out=$("$bin/sampleLithostatic" -case "$work/tank" 2>&1); rc=$?
 check "a missing sampleLithostaticDict is an error naming it" bash -c "[ $rc -ne 0 ] && grep -q 'sampleLithostaticDict' <<< \"\$1\"" _ "$out"
+
+# sampleWallFilm on the tank at rest: the water is thick against its steep side walls, so no
+# film; the dictionary is optional, and a misspelt or bad entry is an error naming it
+"$bin/sampleWallFilm" -case "$work/tank" > "$work/log6" 2>&1; rc=$?
+check "sampleWallFilm runs without its dictionary, saying what it takes" \
+  bash -c "[ $rc -eq 0 ] && grep -q 'no .*sampleWallFilmDict: restSpeed 0.01 m/s, maxThickness 2.5 spacings' '$work/log6'"
+film="$work/tank/postProcessing/sampleWallFilm/0/wallFilm.dat"
+nWater=$(awk 'FNR == 1 { s = 0 } !s && /^[0-9]+$/ { s = 1; next } s && $1 == "0" { n++ } END { print n }' "$work/tank/0/lagrangian/particles/kind")
+check "... a row per time: no film, every water particle at rest" \
+  awk -v n="$nWater" '!/^#/ { r++; if (!($2 == 0 && $3 == 0 && $6 == n)) bad++ } END { exit !(r == 2 && !bad && n > 0) }' "$film"
+check "... and the film's particles beside it (none)" test "$(grep -vc '^#' "$work/tank/postProcessing/sampleWallFilm/0/wallFilmParticles.dat")" -eq 0
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object sampleWallFilmDict; }\nrestSped 0.02;\n' \
+  > "$work/tank/system/sampleWallFilmDict"
+out=$("$bin/sampleWallFilm" -case "$work/tank" 2>&1); rc=$?
+check "a misspelt keyword is an error naming it and the file" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'restSped' <<< \"\$1\" && grep -q 'sampleWallFilmDict' <<< \"\$1\"" _ "$out"
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object sampleWallFilmDict; }\nmaxThickness -1;\n' \
+  > "$work/tank/system/sampleWallFilmDict"
+out=$("$bin/sampleWallFilm" -case "$work/tank" 2>&1); rc=$?
+check "a negative maxThickness is an error naming it, the file and the line" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'maxThickness: expected a positive number of spacings' <<< \"\$1\" && grep -q 'sampleWallFilmDict, line 2' <<< \"\$1\"" _ "$out"
 
 echo "$((total - fails)) passed, $fails failed"
 [ "$fails" -eq 0 ]
