@@ -7,8 +7,9 @@
 // paths. Compared: every file of the final time directory byte for byte (so every field in
 // storage order), and the log of every step after the restart (the time step, every linear
 // solve with its iterations and residuals, the Courant number), on the dam break (ISPH and
-// WCSPH), the granular layer at rest and the barrier at its -test spacing. Exact: the fields
-// are written in binary, which reads back exactly (ascii with writePrecision 17 would too).
+// WCSPH), the granular layer at rest (in binary and in ascii with 17 digits) and the barrier at
+// its -test spacing. Exact: the fields are written in binary, or in ascii with writePrecision
+// 17, both of which read back exactly.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -137,6 +138,18 @@ TEST(Restart, GranularLayerAtRestRestartsBitForBit) {
                                  "",
                                  "0.2",
                                  "0.3"});
+}
+
+// The same layer written in ascii with 17 significant digits, which read back exactly too: a
+// user who keeps the tutorials' ascii for their awk scripts can restart bit for bit by raising
+// writePrecision (at the tutorials' 8 digits a restart continues from the rounded fields).
+TEST(Restart, GranularLayerAtRestWrittenInAsciiWithSeventeenDigitsRestartsBitForBit) {
+  checkRestart("restartAtRestAscii", {"granularAtRest",
+                                      {{"spacing", "0.01"}},
+                                      {{"writeInterval", "0.1"}, {"writeFormat", "ascii"}, {"writePrecision", "17"}},
+                                      "",
+                                      "0.2",
+                                      "0.3"});
 }
 
 // Bui et al.'s elastic-plastic model in WCSPH (the column's `-elasticPlastic` variant): its
