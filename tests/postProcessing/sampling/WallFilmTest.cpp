@@ -7,6 +7,10 @@
 
 #include "core/Error.hpp"
 
+// The scenes are built particle by particle, so every figure is exact: the counts are counts,
+// and 1e-12 on masses and elevations is the round-off of summing and rotating them (no run, no
+// noise to measure). The limits tested (rows thick, angles, speeds) are the definition's own
+// (WallFilm.hpp), on either side of each.
 namespace {
 
 using namespace isph;
