@@ -155,4 +155,75 @@ TEST(WallFriction, CapacityIsTanDeltaTimesTheWeightAndTheHydrostaticOneIgnoresRa
   EXPECT_NEAR(hydrostatic, 1.0, 0.01);
 }
 
+// Sand lying on a rough bed in one row at rest (p = 0: all of it free surface), the walls'
+// pressure from u* = dt g, 40 wall particles: a row of 20, the same row with every other
+// particle gone, one particle in every fourth place, and a lone particle. Each particle should
+// carry tan δ times its own weight (σ_w = ρ g dx/2 at the wall line plus the half layer),
+// however sparse the row (issue 55's goal: a wall carries at most tan δ times the normal stress
+// of the layer's weight). Below goal, so DISABLED_: each wall particle within reach of any
+// material gives the capacity of a full row (σ_w is a Shepard mean), so the sums are 1.20,
+// 2.30, 4.20 and 5.00 times that (the row's ends; the gaps; a lone particle gathers five wall
+// particles' worth and sticks on a 45° wall of friction 25°: the film of issue 55). Counting the
+// part of each wall particle's area the material covers (doc/notes/thinLayers-coverage.patch)
+// gives 1.0000 in all four, but moves the thick layers' ends (doc/notes/thinLayers.md, "Why a
+// thin layer is held"). The tolerance 1 % is the lattice's kernel-sum error at the row's ends.
+struct SparseRow {
+  ParticleSystem ps;
+  std::unique_ptr<Kernel> kernel = makeKernel("WendlandC2", 1.3 * dx, 2);
+  std::unique_ptr<MaterialTable> materials;
+  static constexpr double rho = 2000, g = 9.81;
+
+  explicit SparseRow(const std::vector<int>& sites) {
+    materials = test::materialTable("WallFrictionTest", "rock { model rigidPlastic; rho 2000; phi 40; }", {"rock"});
+    ParticleCloud& c = ps.cloud;
+    c.properties.materials = {"rock"};
+    c.properties.patches = {{"rough", 30.0}};
+    c.properties.spacing = dx;
+    for (int i = 0; i < 40; ++i) {
+      const double x = (i + 0.5) * dx;
+      c.push_back(Vec3(x, 0, 0), 1000 + i, Vec3::Zero(), 0.0, -1, ParticleKind::wall, 0, Vec3(0, 1, 0), 0);
+      c.push_back(Vec3(x, -dx, 0), 2000 + i, Vec3::Zero(), 0.0, -1, ParticleKind::dummy, 0, Vec3::Zero(), 0);
+    }
+    for (int i : sites) {
+      c.push_back(Vec3((i + 0.5) * dx, 0.5 * dx, 0), i, Vec3::Zero(), 0.0, 0, ParticleKind::material, -1,
+                  Vec3::Zero(), rho * dx * dx);
+    }
+    initialiseParticleSystem(ps, *materials, *kernel);
+    ps.neighbours.build(ps.cloud.positions, *kernel);
+    ps.frictionWall.assign(ps.size(), 1);
+    ps.wallPullLimit.assign(ps.nMaterial, 0.0);
+    ps.wallTangentialGradient.assign(ps.nMaterial, Vec3::Zero());
+  }
+
+  // Σ_a F_a over tan δ × the particles' weight.
+  double capacityOverWeight() {
+    const double dt = 1e-3;
+    std::vector<Vec3> resting(ps.size(), Vec3::Zero());
+    for (std::size_t a = 0; a < ps.nMaterial; ++a) resting[a] = dt * Vec3(0, -g, 0);
+    updateWallPressure(ps, resting, Vec3(0, -g, 0), dt);
+    WallFriction friction(ps, *materials, Vec3(0, -g, 0), 1e-5);
+    friction.update(ps);
+    double sum = 0;
+    for (std::size_t a = 0; a < ps.nMaterial; ++a) sum += friction.capacity(a);
+    return sum / (std::tan(30.0 * std::numbers::pi / 180.0) * static_cast<double>(ps.nMaterial) * rho * dx * dx * g);
+  }
+};
+
+TEST(WallFriction, DISABLED_EachParticleOfASparseRowCarriesItsOwnWeightsFriction) {
+  std::vector<int> full, everyOther, everyFourth;
+  for (int i = 10; i < 30; ++i) {
+    full.push_back(i);
+    if (i % 2 == 0) everyOther.push_back(i);
+    if (i % 4 == 0) everyFourth.push_back(i);
+  }
+  const std::pair<const char*, std::vector<int>> rows[] = {
+      {"a full row", full}, {"every other site", everyOther}, {"every fourth site", everyFourth}, {"a lone particle", {20}}};
+  for (const auto& [name, sites] : rows) {
+    SparseRow r(sites);
+    const double ratio = r.capacityOverWeight();
+    std::printf("%s: capacity over tan(delta) x weight %.4f\n", name, ratio);
+    EXPECT_NEAR(ratio, 1.0, 0.01) << name;
+  }
+}
+
 }  // namespace
