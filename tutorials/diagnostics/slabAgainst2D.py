@@ -4,18 +4,26 @@ of the slab along z, the L2 difference of p and of the in-plane velocity from th
 the same (x, y) lattice sites. Use after the first step (or a few), while the particles still
 sit on their lattice sites.
 
-Usage: slabAgainst2D.py CASE2D SLAB TIME DX
+Usage: slabAgainst2D.py CASE2D SLAB TIME
 
-Needs ascii or binary fields of both cases at TIME; the sites are matched on a half-spacing grid.
+Needs ascii or binary fields of both cases at TIME and the 2D case's log.particleMesh (the
+spacing); the sites are matched on a half-spacing grid.
 """
 import math
+import os
+import re
 import sys
 
 from fields import fields
 
-if len(sys.argv) < 5:
+if len(sys.argv) != 4:
     sys.exit(__doc__)
-flat, slab, time, dx = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+flat, slab, time = sys.argv[1], sys.argv[2], sys.argv[3]
+try:
+    with open(os.path.join(flat, 'log.particleMesh')) as log:
+        dx = float(re.search(r'spacing\s+([-+0-9.eE]+)\s+m', log.read()).group(1))
+except (OSError, AttributeError):
+    sys.exit(f"slabAgainst2D.py: no spacing in {flat}/log.particleMesh (run particleMesh there first)")
 f2 = fields(flat, time, ['kind', 'positions', 'p', 'U'])
 f3 = fields(slab, time, ['kind', 'positions', 'p', 'U'])
 
